@@ -1,0 +1,89 @@
+/*---------------------------------------------------------------------------*\
+Application
+    vheFoam
+
+Description
+    Incompressible flow of any number of fluid phases carrying any number of
+    visco-hyperelastic bodies on one fixed Eulerian mesh (phase-averaged
+    full Eulerian model of Sugiyama et al. and the Ushijima group).
+
+    Phases by VOF (MULES, limitSum), B* = phi_s^(1/2) B transported with the
+    upper-convected equation, elastic stress Ghat phi_s^(1/2) dev(B*) in the
+    momentum equation, PIMPLE p_rgh pressure-velocity coupling as interFoam.
+    A case with one fluid and no solid is plain incompressible flow: the
+    phase fractions, B* and the elastic term are not built at all.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "clockTime.H"
+#include "vheMixture.H"
+#include "vheElasticity.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Incompressible multiphase flow carrying visco-hyperelastic bodies"
+        " (phase-averaged full Eulerian model) on a fixed mesh."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "initContinuityErrs.H"
+    #include "createFields.H"
+
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+    clockTime wallClock;
+    const scalar startTime = runTime.value();
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+        #include "vheCourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        while (pimple.loop())
+        {
+            #include "alphaEqn.H"
+            #include "BEqn.H"
+            #include "UEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+        }
+
+        runTime.write();
+
+        #include "progress.H"
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,529 @@
+/*---------------------------------------------------------------------------*\
+Application
+    setBodies
+
+Description
+    Places visco-hyperelastic bodies in a vheFoam case: writes the solid
+    fractions alpha.<material>, reduces the fluid fractions where solid is
+    placed (keeping their proportions, so the sum stays 1) and writes the
+    undeformed B* = phi_s^(1/2) I.  Reads system/setBodiesDict:
+
+    \verbatim
+    maxDepth    5;              // sub-cell integration levels (optional)
+    bodies
+    (
+        ball                    // one body
+        {
+            material    rubber; // a solid of constant/vheProperties
+            shape       sphere; // sphere | cylinder | box | ellipsoid
+            centre      (0.3 0.5 0.3);
+            radius      0.2;    // sphere, cylinder
+            axis        (0 0 1);// cylinder (default z)
+            length      0.1;    // cylinder; omitted: infinite (a 2D disk)
+            semiAxes    (a b c);// ellipsoid (axis aligned)
+            min (x y z); max (x y z);   // box
+        }
+        suspension              // a packing of equal spheres or disks
+        {
+            material    rubber;
+            packing     random; // random | lattice
+            radius      0.05;
+            gap         0.02;   // clearance between bodies and to walls
+            count       16;     // random
+            seed        1;      // random: same seed, same bodies
+            n           (4 4 1);// lattice
+            min (x y z); max (x y z);   // optional region, default: mesh
+        }
+    );
+    \endverbatim
+
+    In a 2D case (z empty) bodies are disks (cylinders along z, infinite)
+    or boxes; packings make disks.  Periodic (cyclic) directions are found
+    from the mesh: bodies may cross them and are wrapped.  Every check is
+    made before anything is written.  Runs on a decomposed case with
+    -parallel.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "cyclicPolyPatch.H"
+#include "vheElasticity.H"
+#include "vhe.h"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+struct body
+{
+    word name;
+    label material;     // index into solidNames
+    vhe_shape shape;
+};
+
+
+static void setVec(double d[3], const vector& v)
+{
+    d[0] = v.x(); d[1] = v.y(); d[2] = v.z();
+}
+
+
+// The shape of one body entry (not a packing)
+static vhe_shape readShape
+(
+    const dictionary& dict,
+    const label nDim
+)
+{
+    vhe_shape s{};
+    s.axis[2] = 1;
+
+    const word shape(dict.get<word>("shape"));
+    if (shape == "sphere")
+    {
+        s.kind = VHE_SPHERE;
+        setVec(s.centre, dict.get<vector>("centre"));
+        s.radius = dict.get<scalar>("radius");
+    }
+    else if (shape == "cylinder" || shape == "disk")
+    {
+        s.kind = VHE_CYLINDER;
+        setVec(s.centre, dict.get<vector>("centre"));
+        s.radius = dict.get<scalar>("radius");
+        vector ax(dict.getOrDefault<vector>("axis", vector(0, 0, 1)));
+        if (mag(ax) < SMALL)
+        {
+            FatalIOErrorInFunction(dict)
+                << "axis of body " << dict.dictName() << " is zero"
+                << exit(FatalIOError);
+        }
+        ax /= mag(ax);
+        setVec(s.axis, ax);
+        s.half_length = 0.5*dict.getOrDefault<scalar>("length", 0);
+        if (nDim == 2 && (mag(ax.z()) < 1 - 1e-12 || s.half_length > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "In a 2D case (z empty) a cylinder must be a disk: axis"
+                << " (0 0 1) and no length; body " << dict.dictName()
+                << " has axis " << ax << exit(FatalIOError);
+        }
+    }
+    else if (shape == "box")
+    {
+        s.kind = VHE_BOX;
+        const vector lo(dict.get<vector>("min")), hi(dict.get<vector>("max"));
+        if (cmptMin(hi - lo) <= 0 && nDim == 3)
+        {
+            FatalIOErrorInFunction(dict)
+                << "box " << dict.dictName() << " has max <= min"
+                << exit(FatalIOError);
+        }
+        setVec(s.centre, 0.5*(lo + hi));
+        setVec(s.semi, 0.5*(hi - lo));
+        if (nDim == 2) s.semi[2] = GREAT;
+    }
+    else if (shape == "ellipsoid")
+    {
+        s.kind = VHE_ELLIPSOID;
+        setVec(s.centre, dict.get<vector>("centre"));
+        const vector a(dict.get<vector>("semiAxes"));
+        setVec(s.semi, a);
+        if (cmptMin(a) <= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "semiAxes of " << dict.dictName() << " must be positive"
+                << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown shape '" << shape << "' for body " << dict.dictName()
+            << nl << "    Valid shapes: (sphere cylinder box ellipsoid)"
+            << exit(FatalIOError);
+    }
+
+    if ((s.kind == VHE_SPHERE || s.kind == VHE_CYLINDER) && s.radius <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "radius of " << dict.dictName() << " must be positive"
+            << exit(FatalIOError);
+    }
+    if (nDim == 2 && (s.kind == VHE_SPHERE || s.kind == VHE_ELLIPSOID))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << dict.dictName() << " is a 3D shape (" << shape
+            << ") but the case is 2D (z empty): use shape cylinder (a disk)"
+            << " or box" << exit(FatalIOError);
+    }
+    return s;
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Place visco-hyperelastic bodies: write alpha.<solid>, reduce the"
+        " fluid fractions and write B* = phi_s^(1/2) I"
+    );
+    argList::addOption("dict", "file", "Alternative setBodiesDict");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const word dictName("setBodiesDict");
+    #include "setSystemMeshDictionaryIO.H"
+    Info<< "Reading " << dictIO.name() << nl << endl;
+    IOdictionary bodiesDict(dictIO);
+
+    IOdictionary props
+    (
+        IOobject("vheProperties", runTime.constant(), mesh,
+                 IOobject::MUST_READ, IOobject::NO_WRITE)
+    );
+    if (!props.isDict("fluids") || props.subDict("fluids").empty())
+    {
+        FatalIOErrorInFunction(props)
+            << "No 'fluids' sub-dictionary with at least one fluid"
+            << exit(FatalIOError);
+    }
+    const wordList fluidNames(props.subDict("fluids").toc());
+    const wordList solidNames
+    (
+        props.isDict("solids") ? props.subDict("solids").toc() : wordList()
+    );
+
+    // Geometry of the mesh: dimension, bounds, periodic directions
+    const label nDim = mesh.nSolutionD();
+    if (nDim == 2 && mesh.solutionD()[vector::Z] != -1)
+    {
+        FatalErrorInFunction
+            << "2D cases must have z as the empty direction"
+            << exit(FatalError);
+    }
+    if (nDim == 1)
+    {
+        FatalErrorInFunction << "1D cases are not supported" << exit(FatalError);
+    }
+    const boundBox bb(mesh.points(), true);
+    double lo[3], hi[3];
+    setVec(lo, bb.min());
+    setVec(hi, bb.max());
+    int periodic[3] = {0, 0, 0};
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<cyclicPolyPatch>(pp))
+        {
+            const vector s = cmptMag(gSum(pp.faceAreas()));
+            periodic[findMax(List<scalar>({s.x(), s.y(), s.z()}))] = 1;
+        }
+    }
+    reduce(periodic[0], maxOp<int>());
+    reduce(periodic[1], maxOp<int>());
+    reduce(periodic[2], maxOp<int>());
+    Info<< "Mesh: " << nDim << "D, bounds " << bb << ", periodic in"
+        << (periodic[0] ? " x" : "") << (periodic[1] ? " y" : "")
+        << (periodic[2] ? " z" : "") << nl << endl;
+
+    const label maxDepth = bodiesDict.getOrDefault<label>("maxDepth", 5);
+
+    // ---- Read every body (all checks before anything is written)
+    DynamicList<body> bodies;
+    const PtrList<entry> entries(bodiesDict.lookup("bodies"));
+    for (const entry& e : entries)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(bodiesDict)
+                << "bodies: entry '" << e.keyword() << "' is not a dictionary"
+                << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        const word material(d.get<word>("material"));
+        const label m = solidNames.find(material);
+        if (m < 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "Body " << e.keyword() << ": material '" << material
+                << "' is not a solid of " << props.objectPath() << nl
+                << "    Solids: " << solidNames << exit(FatalIOError);
+        }
+
+        if (d.found("packing"))
+        {
+            const word packing(d.get<word>("packing"));
+            const scalar radius = d.get<scalar>("radius");
+            const scalar gap = d.getOrDefault<scalar>("gap", 0);
+            if (radius <= 0 || gap < 0)
+            {
+                FatalIOErrorInFunction(d)
+                    << "Packing " << e.keyword()
+                    << ": radius must be > 0 and gap >= 0"
+                    << exit(FatalIOError);
+            }
+            double rlo[3], rhi[3];
+            setVec(rlo, d.getOrDefault<vector>("min", bb.min()));
+            setVec(rhi, d.getOrDefault<vector>("max", bb.max()));
+
+            List<scalar> centres;
+            label count = 0;
+            int status = VHE_OK;
+            if (packing == "lattice")
+            {
+                const Vector<label> n(d.get<Vector<label>>("n"));
+                int ni[3] = {int(n.x()), int(n.y()), int(nDim == 2 ? 1 : n.z())};
+                count = ni[0]*ni[1]*ni[2];
+                centres.setSize(3*count);
+                status = vhe_pack_lattice
+                (
+                    rlo, rhi, ni, radius, gap, nDim, centres.data()
+                );
+            }
+            else if (packing == "random")
+            {
+                count = d.get<label>("count");
+                const label seed = d.getOrDefault<label>("seed", 1);
+                centres.setSize(3*count);
+                size_t placed = 0;
+                int per[3] = {periodic[0], periodic[1], periodic[2]};
+                // A region smaller than the mesh is not periodic
+                for (int k = 0; k < 3; ++k)
+                {
+                    if (rlo[k] > lo[k] + SMALL || rhi[k] < hi[k] - SMALL)
+                    {
+                        per[k] = 0;
+                    }
+                }
+                status = vhe_pack_random
+                (
+                    rlo, rhi, per, nDim, count, radius, gap, uint64_t(seed),
+                    size_t(1000000), centres.data(), &placed
+                );
+                if (status == VHE_ENOFIT)
+                {
+                    FatalIOErrorInFunction(d)
+                        << "Packing " << e.keyword() << ": only " << placed
+                        << " of " << count << " bodies of radius " << radius
+                        << " with gap " << gap << " fit in the region"
+                        << exit(FatalIOError);
+                }
+            }
+            else
+            {
+                FatalIOErrorInFunction(d)
+                    << "Unknown packing '" << packing << "'" << nl
+                    << "    Valid packings: (lattice random)"
+                    << exit(FatalIOError);
+            }
+            if (status != VHE_OK)
+            {
+                FatalIOErrorInFunction(d)
+                    << "Packing " << e.keyword() << ": " << count
+                    << " bodies of radius " << radius << " with gap " << gap
+                    << " cannot fit in the region" << exit(FatalIOError);
+            }
+            for (label b = 0; b < count; ++b)
+            {
+                body bd;
+                bd.name = e.keyword() + "_" + Foam::name(b);
+                bd.material = m;
+                bd.shape = vhe_shape{};
+                bd.shape.kind = nDim == 2 ? VHE_CYLINDER : VHE_SPHERE;
+                bd.shape.axis[2] = 1;
+                bd.shape.radius = radius;
+                for (int k = 0; k < 3; ++k) bd.shape.centre[k] = centres[3*b+k];
+                bodies.append(bd);
+            }
+            Info<< "Packing " << e.keyword() << ": " << count << ' '
+                << packing << (nDim == 2 ? " disks" : " spheres")
+                << " of radius " << radius << ", gap " << gap << nl;
+        }
+        else
+        {
+            body bd;
+            bd.name = e.keyword();
+            bd.material = m;
+            bd.shape = readShape(d, nDim);
+            bodies.append(bd);
+        }
+    }
+
+    // Bodies must lie in the mesh, except across periodic directions
+    for (const body& b : bodies)
+    {
+        double blo[3], bhi[3];
+        vhe_shape_bounds(&b.shape, blo, bhi);
+        for (int k = 0; k < nDim; ++k)
+        {
+            const scalar tol = 1e-9*(hi[k] - lo[k]);
+            const bool inside = periodic[k]
+              ? (b.shape.centre[k] >= lo[k] - tol && b.shape.centre[k] <= hi[k] + tol)
+              : (blo[k] >= lo[k] - tol && bhi[k] <= hi[k] + tol);
+            if (!inside)
+            {
+                FatalIOErrorInFunction(bodiesDict)
+                    << "Body " << b.name << " lies (partly) outside the mesh"
+                    << " in direction " << vector::componentNames[k]
+                    << ": body spans [" << blo[k] << ", " << bhi[k]
+                    << "], mesh [" << lo[k] << ", " << hi[k] << "]"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    // ---- Solid fractions per material, by sub-cell integration
+    const label nCells = mesh.nCells();
+    List<scalarField> solid(solidNames.size(), scalarField(nCells, 0));
+    scalarField phis(nCells, 0);
+    const pointField& pts = mesh.points();
+
+    for (const body& b : bodies)
+    {
+        // The body and its periodic images that reach into the mesh
+        DynamicList<vhe_shape> images(1, b.shape);
+        for (int k = 0; k < 3; ++k)
+        {
+            if (!periodic[k]) continue;
+            const label n = images.size();
+            for (label i = 0; i < n; ++i)
+            {
+                for (const scalar shift : {-1.0, 1.0})
+                {
+                    vhe_shape s = images[i];
+                    s.centre[k] += shift*(hi[k] - lo[k]);
+                    images.append(s);
+                }
+            }
+        }
+
+        scalar placed = 0;
+        for (const vhe_shape& s : images)
+        {
+            double slo[3], shi[3];
+            vhe_shape_bounds(&s, slo, shi);
+            for (label c = 0; c < nCells; ++c)
+            {
+                const boundBox cb(pts, mesh.cellPoints()[c], false);
+                double clo[3], chi[3];
+                setVec(clo, cb.min());
+                setVec(chi, cb.max());
+                bool overlap = true;
+                for (int k = 0; k < nDim; ++k)
+                {
+                    overlap = overlap && clo[k] < shi[k] && chi[k] > slo[k];
+                }
+                if (!overlap) continue;
+                const scalar f =
+                    vhe_shape_fraction(&s, clo, chi, nDim, maxDepth);
+                solid[b.material][c] += f;
+                phis[c] += f;
+                placed += f*mesh.V()[c];
+            }
+        }
+        reduce(placed, sumOp<scalar>());
+        double volume = vhe_shape_volume(&b.shape);
+        if (nDim == 2 && b.shape.kind == VHE_CYLINDER)
+        {
+            volume *= bb.span().z();     // area times the mesh depth
+        }
+        Info<< "Body " << b.name << " (" << solidNames[b.material]
+            << "): volume " << volume << ", on the mesh " << placed << nl;
+    }
+
+    const scalar maxPhis = gMax(phis);
+    if (maxPhis > 1 + 1e-6)
+    {
+        FatalIOErrorInFunction(bodiesDict)
+            << "Bodies overlap: the solid fraction reaches " << maxPhis
+            << " > 1" << exit(FatalIOError);
+    }
+    phis = min(phis, scalar(1));
+
+    // ---- Fields: read where present (for their boundary conditions)
+    const wordList genericTypes(vheElasticity::patchTypes(mesh));
+    auto readOrCreate = [&](const word& name) -> volScalarField*
+    {
+        IOobject io(name, runTime.timeName(), mesh,
+                    IOobject::MUST_READ, IOobject::NO_WRITE);
+        if (io.typeHeaderOk<volScalarField>(true))
+        {
+            return new volScalarField(io, mesh);
+        }
+        io.readOpt() = IOobject::NO_READ;
+        return new volScalarField
+        (
+            io, mesh, dimensionedScalar(dimless, Zero), genericTypes
+        );
+    };
+
+    PtrList<volScalarField> fluidAlphas(fluidNames.size());
+    forAll(fluidNames, i)
+    {
+        fluidAlphas.set(i, readOrCreate("alpha." + fluidNames[i]));
+        if (fluidNames.size() == 1) fluidAlphas[i].primitiveFieldRef() = 1;
+    }
+    PtrList<volScalarField> solidAlphas(solidNames.size());
+    forAll(solidNames, m)
+    {
+        solidAlphas.set(m, readOrCreate("alpha." + solidNames[m]));
+        solidAlphas[m].primitiveFieldRef() = min(solid[m], scalar(1));
+        solidAlphas[m].correctBoundaryConditions();
+    }
+
+    // Fluids keep their proportions and fill what the solids leave
+    scalarField fluidSum(nCells, 0);
+    for (const volScalarField& a : fluidAlphas) fluidSum += a.primitiveField();
+    forAll(fluidAlphas, i)
+    {
+        scalarField& a = fluidAlphas[i].primitiveFieldRef();
+        forAll(a, c)
+        {
+            a[c] = fluidSum[c] > SMALL
+                ? a[c]*(1 - phis[c])/fluidSum[c]
+                : (i == 0 ? 1 - phis[c] : 0);
+        }
+        fluidAlphas[i].correctBoundaryConditions();
+    }
+
+    IOobject bio("Bstar", runTime.timeName(), mesh,
+                 IOobject::MUST_READ, IOobject::NO_WRITE);
+    autoPtr<volSymmTensorField> Bstar;
+    if (bio.typeHeaderOk<volSymmTensorField>(true))
+    {
+        Bstar.reset(new volSymmTensorField(bio, mesh));
+    }
+    else
+    {
+        bio.readOpt() = IOobject::NO_READ;
+        Bstar.reset
+        (
+            new volSymmTensorField
+            (
+                bio, mesh, dimensionedSymmTensor(dimless, Zero), genericTypes
+            )
+        );
+    }
+    vhe_bstar_undeformed
+    (
+        nCells, phis.cdata(),
+        reinterpret_cast<double*>(Bstar->primitiveFieldRef().data())
+    );
+    Bstar->correctBoundaryConditions();
+
+    // ---- Write (only now: every check has passed)
+    Info<< nl << "Solid volume " << gSum(phis*mesh.V())
+        << ", solid fraction max " << gMax(phis) << nl
+        << "Writing";
+    for (const volScalarField& a : fluidAlphas) { Info<< ' ' << a.name(); a.write(); }
+    for (const volScalarField& a : solidAlphas) { Info<< ' ' << a.name(); a.write(); }
+    Info<< ' ' << Bstar->name() << nl;
+    Bstar->write();
+
+    Info<< "\nEnd\n" << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,252 @@
+/*
+ * vhe.h -- the pointwise mathematics of vheFoam (C99, no OpenFOAM).
+ *
+ * Every function is a pure kernel over caller-owned arrays: no globals, no
+ * allocation, no I/O.  The OpenFOAM shim hands field data pointers straight
+ * in (Field<T>::cdata()/data()), so the array layouts are OpenFOAM's:
+ *   scalar      1 double per cell
+ *   vector      3 doubles  (x y z)
+ *   symmTensor  6 doubles  (xx xy xz yy yz zz)
+ *   tensor      9 doubles  row-major (xx xy xz yx yy yz zx zy zz)
+ * OpenFOAM's fvc::grad(U) has (i,j) = d u_j / d x_i, i.e. it is L^T where
+ * L_ij = d u_i / d x_j is the velocity gradient of the papers; kernels that
+ * take a velocity gradient take OpenFOAM's grad(U) and say so.
+ *
+ * Units are SI and given per argument.  B* = phi_s^(1/2) B with B the left
+ * Cauchy-Green tensor of the solid (dimensionless).
+ */
+#ifndef VHE_H
+#define VHE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Status codes returned by the kernels that can fail. */
+enum vhe_status {
+    VHE_OK = 0,
+    VHE_EBADARG = 1,   /* an argument is out of its domain (NULL, r <= 0, ...) */
+    VHE_ENOFIT = 2     /* a packing cannot place the requested bodies        */
+};
+
+/* ------------------------------------------------------------------ mixture */
+
+/*
+ * Mixture properties from the phase fractions.
+ *   alpha[k][c]  volume fraction of phase k in cell c (k < nphase)
+ *   rho_k[k]     density of phase k [kg/m^3]
+ *   mu_k[k]      dynamic viscosity of phase k [Pa s]
+ *   G_k[k]       shear modulus of phase k [Pa]; 0 for a fluid phase
+ *   is_solid[k]  nonzero for a solid material
+ * Outputs (any may be NULL to skip):
+ *   rho[c] = sum_k alpha_k rho_k, mu[c] = sum_k alpha_k mu_k,
+ *   phis[c] = sum_solids alpha_m (clipped to [0,1]),
+ *   Ghat[c] = sum_solids alpha_m G_m / phis, 0 where phis <= phis_min.
+ */
+void vhe_mixture(size_t n, int nphase, const double *const *alpha,
+                 const double *rho_k, const double *mu_k, const double *G_k,
+                 const int *is_solid, double phis_min,
+                 double *rho, double *mu, double *phis, double *Ghat);
+
+/* ----------------------------------------------------------- elastic stress */
+
+/*
+ * sigma[c] = Ghat phi_s^(1/2) dev(B*)   [Pa], symmTensor layout (6 per cell).
+ * Zero where phis <= phis_min.  dev(A) = A - tr(A)/3 I.
+ */
+void vhe_elastic_stress(size_t n, const double *Ghat, const double *phis,
+                        const double *Bstar, double phis_min, double *sigma);
+
+/* ------------------------------------------------------------------ stretch */
+
+/* 3x3 matrix exponential, row-major, scaling and squaring with Pade(6,6). */
+void vhe_expm3(const double A[9], double E[9]);
+
+/*
+ * Upper-convected stretch over one step, exact for a velocity gradient held
+ * constant over dt:  B* <- F B* F^T,  F = exp(dt L).
+ *   gradU  OpenFOAM's fvc::grad(U) per cell (9 doubles) [1/s]; L = gradU^T
+ *   dt     time step [s]
+ *   Bstar  in/out, symmTensor per cell
+ * F B F^T is congruent to B, so a symmetric positive (semi)definite B* stays
+ * so for any dt; det(F) = exp(dt tr L), so det(B*) is preserved when tr L = 0.
+ */
+void vhe_stretch(size_t n, double dt, const double *gradU, double *Bstar);
+
+/* Sets B* to 0 where phis <= phis_min (pure fluid carries no deformation). */
+void vhe_clip_fluid(size_t n, const double *phis, double phis_min,
+                    double *Bstar);
+
+/* Sets B* = phi_s^(1/2) I (undeformed solid, zero in fluid). */
+void vhe_bstar_undeformed(size_t n, const double *phis, double *Bstar);
+
+/* ----------------------------------------------------- symmetric 3x3 tools */
+
+/* Eigenvalues of a symmTensor, ascending (analytic, trigonometric form). */
+void vhe_sym_eigenvalues(const double S[6], double lambda[3]);
+
+/* Determinant of a symmTensor. */
+double vhe_sym_det(const double S[6]);
+
+/*
+ * Solid diagnostics over n cells, for cells with phis > phis_solid:
+ *   out[0] min eigenvalue of B* over all cells (>= 0 for a valid state)
+ *   out[1] max |dev(B)| (Frobenius norm), B = B* / phi_s^(1/2)
+ *   out[2] max |det(B) - 1|, det(B) = det(B*)/phi_s^(3/2)
+ * Cells with phis <= phis_solid contribute only to out[0].  With no such
+ * cell out[1] = out[2] = 0.  out[0] = +HUGE_VAL when n = 0.
+ */
+void vhe_solid_diagnostics(size_t n, const double *phis, const double *Bstar,
+                           double phis_solid, double out[3]);
+
+/*
+ * Repairs B* in place where it is not positive definite: eigenvalues below
+ * lambda_min phi_s^(1/2) are raised to it.  Returns the number of cells
+ * changed.  Used only when the case asks for it (never silent).
+ */
+size_t vhe_spd_repair(size_t n, const double *phis, double lambda_min,
+                      double *Bstar);
+
+/* ------------------------------------------------------------- time step */
+
+/* Elastic shear-wave speed c = sqrt(Ghat phi_s / rho) [m/s] per cell. */
+void vhe_wave_speed(size_t n, const double *Ghat, const double *phis,
+                    const double *rho, double *c);
+
+/*
+ * Largest stable explicit step for the elastic wave:
+ *   elastic Courant number Co_e = 0.5 dt c sum_f |S_f| / V   per cell
+ *   (the same face-sum form as OpenFOAM's flow Courant number).
+ *   sumMagSfByV[c] = sum_f |S_f| / V  [1/m] over the cell's non-empty faces.
+ * Returns max_c dt with Co_e <= maxCo, HUGE_VAL where no cell is elastic.
+ * courant_out, if not NULL, receives max Co_e for the given dt.
+ */
+double vhe_elastic_dt(size_t n, const double *Ghat, const double *phis,
+                      const double *rho, const double *sumMagSfByV,
+                      double maxCo, double dt, double *courant_out);
+
+/* ---------------------------------------------------------------- energy */
+
+/* Kinetic energy density 0.5 rho |U|^2 [J/m^3]. */
+void vhe_kinetic_energy(size_t n, const double *rho, const double *U,
+                        double *e);
+
+/* Elastic energy density Ghat/2 (phi_s^(1/2) tr(B*) - 3 phi_s) [J/m^3]. */
+void vhe_elastic_energy(size_t n, const double *Ghat, const double *phis,
+                        const double *Bstar, double *e);
+
+/* ---------------------------------------------------------------- shapes */
+
+enum vhe_shape_kind {
+    VHE_SPHERE = 0,     /* centre, radius                                 */
+    VHE_CYLINDER = 1,   /* centre, axis (unit), radius, half_length;
+                           half_length <= 0 means infinite (a 2D disk)    */
+    VHE_BOX = 2,        /* centre, half-extents in semi[]                 */
+    VHE_ELLIPSOID = 3   /* centre, semi-axes in semi[] (axis aligned)     */
+};
+
+struct vhe_shape {
+    int kind;            /* enum vhe_shape_kind */
+    double centre[3];    /* [m] */
+    double axis[3];      /* cylinder axis, unit vector */
+    double radius;       /* sphere/cylinder radius [m] */
+    double half_length;  /* cylinder half length [m], <= 0: infinite */
+    double semi[3];      /* box half-extents / ellipsoid semi-axes [m] */
+};
+
+/*
+ * VHE_OK if the shape is usable, VHE_EBADARG otherwise (NULL, unknown kind,
+ * non-finite centre, radius <= 0, zero cylinder axis, semi[] <= 0 for a box
+ * or ellipsoid).  The functions below treat an invalid shape as empty:
+ * sdf = +HUGE_VAL, volume 0, fraction 0, bounds lo = +HUGE_VAL, hi = -HUGE_VAL.
+ */
+int vhe_shape_check(const struct vhe_shape *s);
+
+/*
+ * Lipschitz-1 signed distance bound: < 0 inside, > 0 outside, and
+ * |value| <= true distance to the surface (exact for sphere, box, cylinder).
+ */
+double vhe_shape_sdf(const struct vhe_shape *s, const double x[3]);
+
+/* Exact volume of the shape [m^3] (an infinite cylinder: area per length). */
+double vhe_shape_volume(const struct vhe_shape *s);
+
+/*
+ * Volume fraction of the shape in an axis-aligned box cell [lo, hi] by
+ * adaptive sub-cell integration: a sub-box whose centre lies farther from
+ * the surface (by vhe_shape_sdf) than its half-diagonal is wholly in or out;
+ * any other is split in 2 along each integrated direction, down to
+ * max_depth levels, where the leaf counts by the linear estimate
+ * clamp(0.5 - sdf(centre) / (2 h), 0, 1), h the mean half-edge of the leaf.
+ * ndim = 2: the case is 2D with z the empty direction; z is not split and
+ * the shape is sampled at the cell's mid z (use shapes infinite along z).
+ * Returns a value in [0, 1].
+ */
+double vhe_shape_fraction(const struct vhe_shape *s, const double lo[3],
+                          const double hi[3], int ndim, int max_depth);
+
+/* Axis-aligned bounding box of the shape; infinite extents are +-HUGE_VAL. */
+void vhe_shape_bounds(const struct vhe_shape *s, double lo[3], double hi[3]);
+
+/* -------------------------------------------------------------- packings */
+
+/*
+ * Deterministic pseudo-random generator (splitmix64): the same seed gives the
+ * same sequence on every machine and every MPI rank.
+ */
+uint64_t vhe_rng_next(uint64_t *state);
+double vhe_rng_uniform(uint64_t *state);          /* in [0, 1) */
+
+/*
+ * Lattice packing: nx*ny*nz centres evenly spaced in the box [lo, hi]
+ * (cell-centred: centre_i = lo + (i + 1/2) (hi - lo)/n).  centres has room
+ * for 3 * nx*ny*nz doubles.  Returns VHE_ENOFIT when bodies of the given
+ * radius plus gap would overlap or cross the box (dimension d counts only
+ * where n[d] > 0 and not 2D-ignored: ndim 2 ignores z), VHE_OK otherwise.
+ * Precisely: fits iff (hi - lo)/n >= 2 radius + gap in every counted
+ * direction (clearance >= gap between bodies, >= gap/2 to the box); ndim 2
+ * with n[2] > 1 is VHE_ENOFIT (coincident disks); any n[d] = 0 places no
+ * body (VHE_OK); n[d] < 0, radius <= 0, gap < 0: VHE_EBADARG.  Centres are
+ * ordered x fastest, then y, then z.
+ */
+int vhe_pack_lattice(const double lo[3], const double hi[3], const int n[3],
+                     double radius, double gap, int ndim, double *centres);
+
+/*
+ * Random sequential addition of `count` spheres (ndim 3) or disks (ndim 2,
+ * z = (lo+hi)/2) of `radius` in the box [lo, hi] with a clearance `gap`
+ * between bodies and, in non-periodic directions, between a body and the
+ * box.  periodic[d] nonzero makes direction d periodic (distances taken
+ * through the boundary, bodies may cross it).  Tries at most max_tries
+ * candidates in all; returns VHE_ENOFIT if the count is not reached (the
+ * centres written so far stay valid, *placed says how many).
+ */
+int vhe_pack_random(const double lo[3], const double hi[3],
+                    const int periodic[3], int ndim, size_t count,
+                    double radius, double gap, uint64_t seed,
+                    size_t max_tries, double *centres, size_t *placed);
+
+/* Smallest clearance (surface-to-surface) among n equal bodies, with
+ * periodic images as in vhe_pack_random; HUGE_VAL for n < 2. */
+double vhe_min_clearance(const double lo[3], const double hi[3],
+                         const int periodic[3], int ndim, size_t n,
+                         double radius, const double *centres);
+
+/* ------------------------------------------------------- exact solutions */
+
+/*
+ * Plane Poiseuille between walls y = 0 and y = h driven by a body force f
+ * per unit mass: u(y) = f/(2 nu) y (h - y); flow rate Q = f h^3 / (12 nu)
+ * per unit depth.
+ */
+double vhe_poiseuille_u(double f, double nu, double h, double y);
+double vhe_poiseuille_q(double f, double nu, double h);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* VHE_H */

@@ -1,0 +1,196 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: the elastic part of the phase-averaged model
+\*---------------------------------------------------------------------------*/
+
+#include "vheElasticity.H"
+#include "fvm.H"
+#include "fvc.H"
+#include "zeroGradientFvPatchFields.H"
+#include "polyPatch.H"
+#include "vhe.h"
+
+// OpenFOAM's VectorSpace types are contiguous doubles (checked by the
+// layout tests of the C core): view a field as the flat array it is.
+namespace
+{
+template<class T>
+inline const double* flat(const Foam::UList<T>& f)
+{
+    return reinterpret_cast<const double*>(f.cdata());
+}
+template<class T>
+inline double* flat(Foam::UList<T>& f)
+{
+    return reinterpret_cast<double*>(f.data());
+}
+}
+
+
+Foam::wordList Foam::vheElasticity::patchTypes(const fvMesh& mesh)
+{
+    // Constraint patches (cyclic, empty, processor, symmetry, wedge) keep
+    // their type; B* is extrapolated at every other boundary.
+    wordList types
+    (
+        mesh.boundary().size(),
+        zeroGradientFvPatchField<symmTensor>::typeName
+    );
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const word& pt = mesh.boundaryMesh()[patchi].type();
+        if (polyPatch::constraintType(pt)) types[patchi] = pt;
+    }
+    return types;
+}
+
+
+Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
+:
+    mixture_(mixture),
+    mesh_(mixture.rho().mesh()),
+    Bstar_
+    (
+        IOobject
+        (
+            "Bstar",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh_,
+        dimensionedSymmTensor(dimless, Zero),
+        patchTypes(mesh_)
+    ),
+    sumMagSfByV_
+    (
+        fvc::surfaceSum(mesh_.magSf())().primitiveField()/mesh_.V()
+    )
+{
+    if (Bstar_.headerOk())
+    {
+        Info<< "Read Bstar from " << Bstar_.objectPath() << endl;
+        // A state that is not positive semi-definite has no meaning
+        // (B = F F^T); stop rather than run on it.
+        double diag[3];
+        vhe_solid_diagnostics
+        (
+            mesh_.nCells(), mixture.phis().primitiveField().cdata(),
+            flat(Bstar_.primitiveField()), 0.5, diag
+        );
+        const scalar minEig = returnReduce(diag[0], minOp<scalar>());
+        if (minEig < -1e-9)
+        {
+            vheFieldFatalError(Bstar_.objectPath())
+                << "Field " << Bstar_.objectPath()
+                << " is not positive semi-definite: smallest eigenvalue "
+                << minEig << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        Info<< "No Bstar field: starting undeformed, B* = phi_s^(1/2) I"
+            << endl;
+        vhe_bstar_undeformed
+        (
+            mesh_.nCells(), mixture.phis().primitiveField().cdata(),
+            flat(Bstar_.primitiveFieldRef())
+        );
+        Bstar_.correctBoundaryConditions();
+    }
+    Bstar_.oldTime();
+}
+
+
+void Foam::vheElasticity::advect(const surfaceScalarField& phi)
+{
+    fvSymmTensorMatrix BEqn
+    (
+        fvm::ddt(Bstar_) + fvm::div(phi, Bstar_, "div(phi,Bstar)")
+    );
+    BEqn.solve();
+}
+
+
+void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
+{
+    const volTensorField gradU(fvc::grad(U));
+    vhe_stretch
+    (
+        mesh_.nCells(), deltaT, flat(gradU.primitiveField()),
+        flat(Bstar_.primitiveFieldRef())
+    );
+}
+
+
+void Foam::vheElasticity::clip()
+{
+    vhe_clip_fluid
+    (
+        mesh_.nCells(), mixture_.phis().primitiveField().cdata(),
+        mixture_.solidFractionMin(), flat(Bstar_.primitiveFieldRef())
+    );
+    Bstar_.correctBoundaryConditions();
+}
+
+
+Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::sigma() const
+{
+    tmp<volSymmTensorField> tsigma
+    (
+        new volSymmTensorField
+        (
+            IOobject("sigmaElastic", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedSymmTensor(dimPressure, Zero),
+            patchTypes(mesh_)
+        )
+    );
+    volSymmTensorField& s = tsigma.ref();
+    const scalar phisMin = mixture_.solidFractionMin();
+
+    vhe_elastic_stress
+    (
+        mesh_.nCells(), mixture_.Ghat().primitiveField().cdata(),
+        mixture_.phis().primitiveField().cdata(),
+        flat(Bstar_.primitiveField()), phisMin, flat(s.primitiveFieldRef())
+    );
+    s.correctBoundaryConditions();
+    return tsigma;
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma() const
+{
+    return fvc::div(sigma(), "div(sigma)");
+}
+
+
+Foam::scalar Foam::vheElasticity::courantNo(scalar deltaT) const
+{
+    double co = 0;
+    vhe_elastic_dt
+    (
+        mesh_.nCells(), mixture_.Ghat().primitiveField().cdata(),
+        mixture_.phis().primitiveField().cdata(),
+        mixture_.rho().primitiveField().cdata(), sumMagSfByV_.cdata(),
+        1, deltaT, &co
+    );
+    return returnReduce(scalar(co), maxOp<scalar>());
+}
+
+
+Foam::scalar Foam::vheElasticity::maxDeltaT(scalar maxCo) const
+{
+    const double dt = vhe_elastic_dt
+    (
+        mesh_.nCells(), mixture_.Ghat().primitiveField().cdata(),
+        mixture_.phis().primitiveField().cdata(),
+        mixture_.rho().primitiveField().cdata(), sumMagSfByV_.cdata(),
+        maxCo, 1, nullptr
+    );
+    return returnReduce(scalar(dt < VGREAT ? dt : VGREAT), minOp<scalar>());
+}
+
+
+// ************************************************************************* //

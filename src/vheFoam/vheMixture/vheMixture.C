@@ -1,0 +1,599 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: phase-averaged gas/liquid/solid mixture
+\*---------------------------------------------------------------------------*/
+
+#include "vheMixture.H"
+#include "fvc.H"
+#include "MULES.H"
+#include "upwind.H"
+#include "wordRes.H"
+#include "OSspecific.H"
+#include "vhe.h"
+
+// * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
+
+void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
+{
+    const wordList allowed =
+        solid ? wordList({"rho", "mu", "nu", "G"})
+              : wordList({"rho", "mu", "nu"});
+
+    for (const entry& e : dict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << e.keyword() << "' in " << dict.dictName()
+                << " is not a phase sub-dictionary" << nl
+                << "    Expected: " << dict.dictName()
+                << " { <name> { rho ...; nu ...;"
+                << (solid ? " G ...;" : "") << " } }"
+                << exit(FatalIOError);
+        }
+        const dictionary& pd = e.dict();
+        const word& name = e.keyword();
+
+        for (const phase& p : phases_)
+        {
+            if (p.name == name)
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Phase name '" << name << "' is used twice"
+                    << exit(FatalIOError);
+            }
+        }
+        for (const entry& pe : pd)
+        {
+            if (!allowed.found(pe.keyword()))
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Unknown entry '" << pe.keyword() << "' for "
+                    << (solid ? "solid material " : "fluid phase ") << name
+                    << nl << "    Valid entries: " << allowed
+                    << exit(FatalIOError);
+            }
+        }
+
+        phase p;
+        p.name = name;
+        p.solid = solid;
+        p.rho = dimensionedScalar("rho", dimDensity, pd);
+        if (p.rho.value() <= 0)
+        {
+            FatalIOErrorInFunction(pd)
+                << "rho of " << name << " must be positive, got "
+                << p.rho.value() << exit(FatalIOError);
+        }
+
+        const bool hasMu = pd.found("mu");
+        const bool hasNu = pd.found("nu");
+        if (hasMu == hasNu)
+        {
+            FatalIOErrorInFunction(pd)
+                << "Give exactly one of 'mu' [Pa s] or 'nu' [m2/s] for "
+                << name << exit(FatalIOError);
+        }
+        if (hasMu)
+        {
+            p.mu = dimensionedScalar("mu", dimDynamicViscosity, pd);
+        }
+        else
+        {
+            p.mu = p.rho*dimensionedScalar("nu", dimViscosity, pd);
+            p.mu.name() = "mu";
+        }
+        if (p.mu.value() < 0)
+        {
+            FatalIOErrorInFunction(pd)
+                << "Viscosity of " << name << " must not be negative, got "
+                << (hasMu ? "mu = " : "nu = ")
+                << (hasMu ? p.mu.value() : p.mu.value()/p.rho.value())
+                << exit(FatalIOError);
+        }
+
+        if (solid)
+        {
+            p.G = dimensionedScalar("G", dimPressure, pd);
+            if (p.G.value() <= 0)
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Shear modulus G of " << name
+                    << " must be positive, got " << p.G.value()
+                    << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            p.G = dimensionedScalar("G", dimPressure, Zero);
+        }
+
+        phases_.append(p);
+    }
+}
+
+
+void Foam::vheMixture::readAlphas()
+{
+    if (phases_.size() < 2) return;
+
+    // Every alpha.* file present must name a phase of vheProperties: a
+    // forgotten phase would silently carry volume nobody transports.
+    const fileName timeDir(mesh_.time().timePath());
+    for (const fileName& f : readDir(timeDir, fileName::FILE))
+    {
+        const word fw(f.name());
+        if (fw.startsWith("alpha.") && !fw.hasExt("orig"))
+        {
+            const word phaseName(fw.substr(6));
+            bool known = false;
+            for (const phase& p : phases_) known = known || p.name == phaseName;
+            if (!known && phaseName != "phis")
+            {
+                FatalIOErrorInFunction(*this)
+                    << "Field file " << timeDir/fw
+                    << " names no phase of " << objectPath() << nl
+                    << "    Phases: fluids and solids entries" << nl
+                    << "    Either add '" << phaseName
+                    << "' to vheProperties or remove the file"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    alphas_.setSize(phases_.size());
+    forAll(phases_, i)
+    {
+        const word name("alpha." + phases_[i].name);
+        IOobject io(name, mesh_.time().timeName(), mesh_,
+                    IOobject::MUST_READ, IOobject::AUTO_WRITE);
+        if (!io.typeHeaderOk<volScalarField>(true))
+        {
+            FatalIOErrorInFunction(*this)
+                << "Phase '" << phases_[i].name << "' of " << objectPath()
+                << " has no field file " << mesh_.time().timePath()/name
+                << exit(FatalIOError);
+        }
+        alphas_.set(i, new volScalarField(io, mesh_));
+        alphas_[i].oldTime();
+    }
+}
+
+
+void Foam::vheMixture::checkAlphas() const
+{
+    if (alphas_.empty()) return;
+
+    const scalar tol = 1e-6;
+    scalarField sum(mesh_.nCells(), 0);
+    for (const volScalarField& a : alphas_)
+    {
+        const scalar aMin = gMin(a.primitiveField());
+        const scalar aMax = gMax(a.primitiveField());
+        if (aMin < -tol || aMax > 1 + tol)
+        {
+            vheFieldFatalError(a.objectPath())
+                << "Field " << a.objectPath() << " has values outside [0, 1]:"
+                << " min " << aMin << ", max " << aMax
+                << exit(FatalIOError);
+        }
+        sum += a.primitiveField();
+    }
+    const scalar sMin = gMin(sum), sMax = gMax(sum);
+    if (sMin < 1 - tol || sMax > 1 + tol)
+    {
+        vheFieldFatalError(mesh_.time().timePath())
+            << "The phase fractions alpha.* in "
+            << mesh_.time().timePath() << " do not sum to 1:"
+            << " sum ranges over [" << sMin << ", " << sMax << "]" << nl
+            << "    Set them consistently (setFields, setBodies)"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::vheMixture::nHatf
+(
+    const volScalarField& alpha1,
+    const volScalarField& alpha2
+) const
+{
+    // Interface normal between two phases, as multiphaseMixture
+    surfaceVectorField gradAlphaf
+    (
+        fvc::interpolate(alpha2)*fvc::interpolate(fvc::grad(alpha1))
+      - fvc::interpolate(alpha1)*fvc::interpolate(fvc::grad(alpha2))
+    );
+    return (gradAlphaf/(mag(gradAlphaf) + deltaN_)) & mesh_.Sf();
+}
+
+
+void Foam::vheMixture::solveAlphaStep(scalar cAlpha, scalar deltaT)
+{
+    const word alphaScheme("div(phi,alpha)");
+    const word alpharScheme("div(phirb,alpha)");
+
+    surfaceScalarField phic(mag(phi_/mesh_.magSf()));
+    phic = min(cAlpha*phic, max(phic));
+
+    PtrList<surfaceScalarField> alphaPhis(alphas_.size());
+    forAll(alphas_, i)
+    {
+        volScalarField& alpha = alphas_[i];
+        alphaPhis.set
+        (
+            i,
+            new surfaceScalarField
+            (
+                "alphaPhi." + phases_[i].name,
+                fvc::flux(phi_, alpha, alphaScheme)
+            )
+        );
+        surfaceScalarField& alphaPhi = alphaPhis[i];
+
+        forAll(alphas_, j)
+        {
+            if (j == i) continue;
+            surfaceScalarField phir(phic*nHatf(alpha, alphas_[j]));
+            alphaPhi += fvc::flux
+            (
+                -fvc::flux(-phir, alphas_[j], alpharScheme),
+                alpha,
+                alpharScheme
+            );
+        }
+
+        // Limited correction to the upwind flux (returnCorr = true)
+        MULES::limit
+        (
+            1.0/deltaT,
+            geometricOneField(),
+            alpha,
+            phi_,
+            alphaPhi,
+            zeroField(),
+            zeroField(),
+            oneField(),
+            zeroField(),
+            true
+        );
+    }
+
+    MULES::limitSum(alphaPhis);
+
+    rhoPhi_ = dimensionedScalar(rhoPhi_.dimensions(), Zero);
+    scalarField sumAlpha(mesh_.nCells(), 0);
+
+    forAll(alphas_, i)
+    {
+        volScalarField& alpha = alphas_[i];
+        surfaceScalarField& alphaPhi = alphaPhis[i];
+        alphaPhi += upwind<scalar>(mesh_, phi_).flux(alpha);
+
+        // Explicit update from the sub-step's old value (MULES::explicitSolve
+        // with unit density, written out so that sub-steps are exact)
+        alpha.primitiveFieldRef() =
+            alpha.oldTime().primitiveField()
+          - deltaT*fvc::surfaceIntegrate(alphaPhi)().primitiveField();
+        alpha.correctBoundaryConditions();
+
+        rhoPhi_ += alphaPhi*phases_[i].rho;
+        sumAlpha += alpha.primitiveField();
+    }
+
+    // Remove the round-off drift of the sum, as multiphaseMixture
+    const scalarField sumCorr(1.0 - sumAlpha);
+    for (volScalarField& alpha : alphas_)
+    {
+        alpha.primitiveFieldRef() += alpha.primitiveField()*sumCorr;
+        alpha.correctBoundaryConditions();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::vheMixture::vheMixture
+(
+    const volVectorField& U,
+    const surfaceScalarField& phi
+)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "vheProperties",
+            U.time().constant(),
+            U.db(),
+            IOobject::MUST_READ_IF_MODIFIED,
+            IOobject::NO_WRITE
+        )
+    ),
+    mesh_(U.mesh()),
+    U_(U),
+    phi_(phi),
+    phases_(),
+    nSolids_(0),
+    alphas_(),
+    rho_
+    (
+        IOobject("rho", mesh_.time().timeName(), mesh_,
+                 IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh_,
+        dimensionedScalar(dimDensity, Zero)
+    ),
+    mu_
+    (
+        IOobject("mu", mesh_.time().timeName(), mesh_,
+                 IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh_,
+        dimensionedScalar(dimDynamicViscosity, Zero)
+    ),
+    rhoPhi_
+    (
+        IOobject("rhoPhi", mesh_.time().timeName(), mesh_,
+                 IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh_,
+        dimensionedScalar(dimMass/dimTime, Zero)
+    ),
+    bodyForce_
+    (
+        dimensionedVector::getOrDefault
+        (
+            "bodyForce", *this, dimAcceleration, Zero
+        )
+    ),
+    solidFractionMin_(getOrDefault<scalar>("solidFractionMin", 1e-6)),
+    deltaN_
+    (
+        "deltaN",
+        1e-8/pow(average(mesh_.V()), 1.0/3.0)
+    )
+{
+    if (!found("fluids") || !isDict("fluids") || subDict("fluids").empty())
+    {
+        FatalIOErrorInFunction(*this)
+            << "No 'fluids' sub-dictionary with at least one fluid phase"
+            << exit(FatalIOError);
+    }
+    if (found("solids") && !isDict("solids"))
+    {
+        FatalIOErrorInFunction(*this)
+            << "'solids' must be a sub-dictionary of solid materials"
+            << exit(FatalIOError);
+    }
+    for (const entry& e : *this)
+    {
+        const wordList known
+        ({"fluids", "solids", "bodyForce", "solidFractionMin", "FoamFile"});
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(*this)
+                << "Unknown entry '" << e.keyword() << "'" << nl
+                << "    Valid entries: " << known
+                << exit(FatalIOError);
+        }
+    }
+    if (solidFractionMin_ <= 0 || solidFractionMin_ >= 0.5)
+    {
+        FatalIOErrorInFunction(*this)
+            << "solidFractionMin must lie in (0, 0.5), got "
+            << solidFractionMin_ << exit(FatalIOError);
+    }
+
+    readPhases(subDict("fluids"), false);
+    if (found("solids"))
+    {
+        readPhases(subDict("solids"), true);
+    }
+
+    const label n = phases_.size();
+    rhoK_.setSize(n); muK_.setSize(n); GK_.setSize(n); isSolid_.setSize(n);
+    forAll(phases_, i)
+    {
+        rhoK_[i] = phases_[i].rho.value();
+        muK_[i] = phases_[i].mu.value();
+        GK_[i] = phases_[i].G.value();
+        isSolid_[i] = phases_[i].solid;
+        nSolids_ += phases_[i].solid;
+    }
+
+    Info<< "Phases:";
+    for (const phase& p : phases_)
+    {
+        Info<< ' ' << p.name << (p.solid ? " (solid" : " (fluid")
+            << ", rho " << p.rho.value() << ", mu " << p.mu.value();
+        if (p.solid) Info<< ", G " << p.G.value();
+        Info<< ')';
+    }
+    Info<< nl;
+    if (mag(bodyForce_.value()) > 0)
+    {
+        Info<< "Body force per unit mass " << bodyForce_.value() << nl;
+    }
+    Info<< endl;
+
+    readAlphas();
+    checkAlphas();
+
+    if (nSolids_)
+    {
+        phis_.reset
+        (
+            new volScalarField
+            (
+                IOobject("phis", mesh_.time().timeName(), mesh_,
+                         IOobject::NO_READ, IOobject::AUTO_WRITE),
+                mesh_,
+                dimensionedScalar(dimless, Zero)
+            )
+        );
+        Ghat_.reset
+        (
+            new volScalarField
+            (
+                IOobject("Ghat", mesh_.time().timeName(), mesh_,
+                         IOobject::NO_READ, IOobject::NO_WRITE),
+                mesh_,
+                dimensionedScalar(dimPressure, Zero)
+            )
+        );
+    }
+
+    correct();
+    rho_.oldTime();
+
+    // Initial mass flux consistent with the fractions
+    rhoPhi_ = fvc::interpolate(rho_)*phi_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::vheMixture::correct()
+{
+    const label n = phases_.size();
+    List<const scalar*> a(n);
+
+    // The same kernel serves the cells and every patch
+    const auto kernel = [&](label size, scalar* rho, scalar* mu,
+                            scalar* phis, scalar* Ghat)
+    {
+        if (alphas_.empty())
+        {
+            // Single phase: alpha = 1 everywhere
+            for (label c = 0; c < size; ++c)
+            {
+                rho[c] = rhoK_[0];
+                mu[c] = muK_[0];
+            }
+            return;
+        }
+        vhe_mixture
+        (
+            size, n, a.cdata(), rhoK_.cdata(), muK_.cdata(), GK_.cdata(),
+            isSolid_.cdata(), solidFractionMin_, rho, mu, phis, Ghat
+        );
+    };
+
+    forAll(alphas_, i) a[i] = alphas_[i].primitiveField().cdata();
+    kernel
+    (
+        mesh_.nCells(),
+        rho_.primitiveFieldRef().data(),
+        mu_.primitiveFieldRef().data(),
+        nSolids_ ? phis_->primitiveFieldRef().data() : nullptr,
+        nSolids_ ? Ghat_->primitiveFieldRef().data() : nullptr
+    );
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        forAll(alphas_, i)
+        {
+            a[i] = alphas_[i].boundaryField()[patchi].cdata();
+        }
+        kernel
+        (
+            rho_.boundaryField()[patchi].size(),
+            rho_.boundaryFieldRef()[patchi].data(),
+            mu_.boundaryFieldRef()[patchi].data(),
+            nSolids_ ? phis_->boundaryFieldRef()[patchi].data() : nullptr,
+            nSolids_ ? Ghat_->boundaryFieldRef()[patchi].data() : nullptr
+        );
+    }
+}
+
+
+void Foam::vheMixture::solve()
+{
+    if (alphas_.size() < 2)
+    {
+        rhoPhi_ = fvc::interpolate(rho_)*phi_;
+        return;
+    }
+
+    const dictionary& alphaControls = mesh_.solverDict("alpha");
+    const label nSub = alphaControls.getOrDefault<label>("nAlphaSubCycles", 1);
+    const scalar cAlpha = alphaControls.getOrDefault<scalar>("cAlpha", 1);
+    if (nSub < 1)
+    {
+        FatalIOErrorInFunction(alphaControls)
+            << "nAlphaSubCycles must be >= 1, got " << nSub
+            << exit(FatalIOError);
+    }
+
+    const scalar deltaT = mesh_.time().deltaTValue();
+
+    if (nSub == 1)
+    {
+        solveAlphaStep(cAlpha, deltaT);
+    }
+    else
+    {
+        // Each sub-step restarts from its own old value; the true old-time
+        // values are put back afterwards for the next PIMPLE iteration.
+        PtrList<volScalarField> alpha0(alphas_.size());
+        forAll(alphas_, i)
+        {
+            alpha0.set(i, new volScalarField("alpha0", alphas_[i].oldTime()));
+        }
+        surfaceScalarField rhoPhiSum("rhoPhiSum", 0*rhoPhi_);
+
+        for (label s = 0; s < nSub; ++s)
+        {
+            if (s > 0)
+            {
+                for (volScalarField& alpha : alphas_) alpha.oldTime() == alpha;
+            }
+            solveAlphaStep(cAlpha, deltaT/nSub);
+            rhoPhiSum += rhoPhi_/scalar(nSub);
+        }
+        forAll(alphas_, i) alphas_[i].oldTime() == alpha0[i];
+        rhoPhi_ = rhoPhiSum;
+    }
+
+    correct();
+    report();
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::vheMixture::nearInterface() const
+{
+    tmp<volScalarField> tnear
+    (
+        new volScalarField
+        (
+            IOobject("nearInterface", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedScalar(dimless, Zero)
+        )
+    );
+    for (const volScalarField& a : alphas_)
+    {
+        tnear.ref() = max(tnear(), pos0(a - 0.01)*pos0(0.99 - a));
+    }
+    return tnear;
+}
+
+
+Foam::scalar Foam::vheMixture::phaseVolume(const label i) const
+{
+    if (alphas_.empty()) return gSum(mesh_.V());
+    return gSum(mesh_.V()*alphas_[i].primitiveField());
+}
+
+
+void Foam::vheMixture::report() const
+{
+    forAll(alphas_, i)
+    {
+        const volScalarField& a = alphas_[i];
+        Info<< "Phase " << phases_[i].name
+            << " volume " << phaseVolume(i)
+            << "  fraction min, max = " << gMin(a.primitiveField())
+            << ' ' << gMax(a.primitiveField()) << nl;
+    }
+}
+
+
+// ************************************************************************* //
