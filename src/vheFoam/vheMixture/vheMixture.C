@@ -54,15 +54,12 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
             }
         }
 
-        phase p;
-        p.name = name;
-        p.solid = solid;
-        p.rho = dimensionedScalar("rho", dimDensity, pd);
-        if (p.rho.value() <= 0)
+        const dimensionedScalar rho("rho", dimDensity, pd);
+        if (rho.value() <= 0)
         {
             FatalIOErrorInFunction(pd)
                 << "rho of " << name << " must be positive, got "
-                << p.rho.value() << exit(FatalIOError);
+                << rho.value() << exit(FatalIOError);
         }
 
         const bool hasMu = pd.found("mu");
@@ -73,40 +70,35 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
                 << "Give exactly one of 'mu' [Pa s] or 'nu' [m2/s] for "
                 << name << exit(FatalIOError);
         }
-        if (hasMu)
-        {
-            p.mu = dimensionedScalar("mu", dimDynamicViscosity, pd);
-        }
-        else
-        {
-            p.mu = p.rho*dimensionedScalar("nu", dimViscosity, pd);
-            p.mu.name() = "mu";
-        }
-        if (p.mu.value() < 0)
+        const scalar visc = hasMu
+            ? dimensionedScalar("mu", dimDynamicViscosity, pd).value()
+            : dimensionedScalar("nu", dimViscosity, pd).value();
+        if (visc < 0)
         {
             FatalIOErrorInFunction(pd)
                 << "Viscosity of " << name << " must not be negative, got "
-                << (hasMu ? "mu = " : "nu = ")
-                << (hasMu ? p.mu.value() : p.mu.value()/p.rho.value())
+                << (hasMu ? "mu = " : "nu = ") << visc
                 << exit(FatalIOError);
         }
 
+        scalar G = 0;
         if (solid)
         {
-            p.G = dimensionedScalar("G", dimPressure, pd);
-            if (p.G.value() <= 0)
+            G = dimensionedScalar("G", dimPressure, pd).value();
+            if (G <= 0)
             {
                 FatalIOErrorInFunction(pd)
                     << "Shear modulus G of " << name
-                    << " must be positive, got " << p.G.value()
-                    << exit(FatalIOError);
+                    << " must be positive, got " << G << exit(FatalIOError);
             }
         }
-        else
-        {
-            p.G = dimensionedScalar("G", dimPressure, Zero);
-        }
 
+        phase p;
+        p.name = name;
+        p.solid = solid;
+        p.rho = rho.value();
+        p.mu = hasMu ? visc : visc*rho.value();
+        p.G = G;
         phases_.append(p);
     }
 }
@@ -276,7 +268,7 @@ void Foam::vheMixture::solveAlphaStep(scalar cAlpha, scalar deltaT)
           - deltaT*fvc::surfaceIntegrate(alphaPhi)().primitiveField();
         alpha.correctBoundaryConditions();
 
-        rhoPhi_ += alphaPhi*phases_[i].rho;
+        rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, phases_[i].rho);
         sumAlpha += alpha.primitiveField();
     }
 
@@ -362,16 +354,20 @@ Foam::vheMixture::vheMixture
             << "'solids' must be a sub-dictionary of solid materials"
             << exit(FatalIOError);
     }
-    for (const entry& e : *this)
+    // Unknown top-level entries are only warned about: cases commonly
+    // #include a parameter file here.  Phase entries are checked strictly.
     {
         const wordList known
-        ({"fluids", "solids", "bodyForce", "solidFractionMin", "FoamFile"});
-        if (!known.found(e.keyword()))
+        ({"fluids", "solids", "bodyForce", "solidFractionMin"});
+        for (const entry& e : *this)
         {
-            FatalIOErrorInFunction(*this)
-                << "Unknown entry '" << e.keyword() << "'" << nl
-                << "    Valid entries: " << known
-                << exit(FatalIOError);
+            if (!known.found(e.keyword()) && e.keyword() != "FoamFile"
+             && e.isDict())
+            {
+                WarningInFunction
+                    << "Ignoring sub-dictionary '" << e.keyword() << "' in "
+                    << objectPath() << "; valid entries: " << known << endl;
+            }
         }
     }
     if (solidFractionMin_ <= 0 || solidFractionMin_ >= 0.5)
@@ -391,9 +387,9 @@ Foam::vheMixture::vheMixture
     rhoK_.setSize(n); muK_.setSize(n); GK_.setSize(n); isSolid_.setSize(n);
     forAll(phases_, i)
     {
-        rhoK_[i] = phases_[i].rho.value();
-        muK_[i] = phases_[i].mu.value();
-        GK_[i] = phases_[i].G.value();
+        rhoK_[i] = phases_[i].rho;
+        muK_[i] = phases_[i].mu;
+        GK_[i] = phases_[i].G;
         isSolid_[i] = phases_[i].solid;
         nSolids_ += phases_[i].solid;
     }
@@ -402,8 +398,8 @@ Foam::vheMixture::vheMixture
     for (const phase& p : phases_)
     {
         Info<< ' ' << p.name << (p.solid ? " (solid" : " (fluid")
-            << ", rho " << p.rho.value() << ", mu " << p.mu.value();
-        if (p.solid) Info<< ", G " << p.G.value();
+            << ", rho " << p.rho << ", mu " << p.mu;
+        if (p.solid) Info<< ", G " << p.G;
         Info<< ')';
     }
     Info<< nl;

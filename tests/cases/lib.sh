@@ -1,0 +1,51 @@
+# Shared by the case tests (sourced).  A test prints one line per check,
+# "PASS <name>: <figures>" or "FAIL <name>: <why>", which ./Alltest counts.
+# shellcheck disable=SC1091
+. "$(dirname "${BASH_SOURCE[0]}")/../../Make/bashrc"
+
+TESTS_DIR="$VHE_ROOT/tests/cases"
+CHANNEL="$VHE_ROOT/tutorials/periodicChannel"
+WORK="$VHE_ROOT/build/tests/$(basename "$0" .sh)"
+rm -rf "$WORK"
+mkdir -p "$WORK"
+
+nfail=0
+pass() { echo "PASS $1: ${2:-}"; }
+fail() { echo "FAIL $1: ${2:-}"; nfail=$((nfail + 1)); }
+finish() { exit $((nfail > 0)); }
+
+# check NAME CONDITION(python expression) DETAILS
+check() {
+    if python3 -c "import sys; sys.exit(0 if ($2) else 1)"; then
+        pass "$1" "$3"
+    else
+        fail "$1" "$3 (wanted $2)"
+    fi
+}
+
+# channelCase DIR KEY=VALUE...: a periodic channel case from the tutorial
+# template with the given parameters changed
+channelCase() {
+    local dir=$1; shift
+    rm -rf "$dir"
+    cp -r "$CHANNEL/template" "$dir"
+    cp "$CHANNEL/parameters" "$dir/system/parameters"
+    local kv
+    for kv in "$@"; do
+        foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" \
+            "$dir/system/parameters" > /dev/null || return 1
+    done
+    (cd "$dir" && blockMesh > log.blockMesh 2>&1) || return 1
+}
+
+# run DIR APP ARGS...: run in DIR, log to DIR/log.APP, return its status
+run() {
+    local dir=$1 app=$2; shift 2
+    (cd "$dir" && "$app" "$@" > "log.$app" 2>&1)
+}
+
+# Mean flow rate per unit depth over t >= T0 from the flowRate output
+flowRate() {
+    awk -v t0="$2" '!/^#/ && $1 >= t0 {s += -$2; n++} END {printf "%.8g\n", s/n}' \
+        "$1/postProcessing/flowRate/0/surfaceFieldValue.dat"
+}

@@ -1,0 +1,65 @@
+"""pvbatch: phi_s = 0.5 contours over vorticity at the final time.
+
+Usage: pvbatch render.py CASE.foam OUT.png
+"""
+import sys
+
+from paraview.simple import (CellDatatoPointData, ColorBy, Contour,
+                             CreateView, GetColorTransferFunction,
+                             OpenFOAMReader, SaveScreenshot, Show, Slice,
+                             Text)
+
+foam, out = sys.argv[1:3]
+reader = OpenFOAMReader(FileName=foam)
+reader.MeshRegions = ["internalMesh"]
+reader.CellArrays = ["vorticity", "phis"]
+reader.UpdatePipelineInformation()
+t = reader.TimestepValues[-1]
+reader.UpdatePipeline(t)
+
+bounds = reader.GetDataInformation().GetBounds()
+zmid = 0.5 * (bounds[4] + bounds[5])
+cut = Slice(Input=reader)
+cut.SliceType.Origin = [0, 0, zmid]
+cut.SliceType.Normal = [0, 0, 1]
+points = CellDatatoPointData(Input=cut)
+edges = Contour(Input=points, ContourBy=["POINTS", "phis"], Isosurfaces=[0.5])
+
+view = CreateView("RenderView")
+view.ViewSize = [900, 900]
+view.ViewTime = t
+view.OrientationAxesVisibility = 0
+view.Background = [1, 1, 1]
+try:
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+
+shown = Show(cut, view)
+ColorBy(shown, ("CELLS", "vorticity", "Z"))
+lut = GetColorTransferFunction("vorticity")
+lut.ApplyPreset("Cool to Warm", True)
+w = 0.1
+lut.RescaleTransferFunction(-w, w)
+shown.SetScalarBarVisibility(view, True)
+bar = lut  # scalar bar title
+lines = Show(edges, view)
+ColorBy(lines, None)
+lines.AmbientColor = [0, 0, 0]
+lines.DiffuseColor = [0, 0, 0]
+lines.LineWidth = 3
+
+title = Text(Text="vorticity (z) and phi_s = 0.5 at t = %g" % t)
+tshow = Show(title, view)
+tshow.Color = [0, 0, 0]
+tshow.WindowLocation = "Upper Center"
+
+view.InteractionMode = "2D"
+view.ResetCamera()
+view.CameraPosition = [0.5 * (bounds[0] + bounds[1]),
+                       0.5 * (bounds[2] + bounds[3]), bounds[5] + 5]
+view.CameraFocalPoint = [0.5 * (bounds[0] + bounds[1]),
+                         0.5 * (bounds[2] + bounds[3]), zmid]
+view.CameraViewUp = [0, 1, 0]
+view.ResetCamera()
+SaveScreenshot(out, view, ImageResolution=[900, 900])
