@@ -22,21 +22,35 @@ vhe_run()
     }
 }
 
-# vhe_progress LOG...: one line per running case every 20 s until all end
-vhe_watch()
+# vhe_run_pool N APP CASE...: run APP in every CASE, N at a time, printing
+# each running case's progress line every 20 s; fails if any case fails
+vhe_run_pool()
 {
-    local pids=("$@")
-    while :; do
-        local alive=0 p
-        for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && alive=1; done
-        [ $alive = 0 ] && break
-        sleep 20
-        for log in cases/*/log.vheFoam; do
-            [ -f "$log" ] || continue
-            local last
-            last=$(grep "^Progress:" "$log" | tail -1)
-            [ -n "$last" ] && [ "${last#*(100%)}" = "$last" ] \
-                && echo "  [$(basename "$(dirname "$log")")] $last"
+    local n=$1 app=$2; shift 2
+    local queue=("$@") running=() failed=0 pid dir i
+    declare -A caseOf
+    while [ ${#queue[@]} -gt 0 ] || [ ${#running[@]} -gt 0 ]; do
+        while [ ${#running[@]} -lt "$n" ] && [ ${#queue[@]} -gt 0 ]; do
+            dir=${queue[0]}; queue=("${queue[@]:1}")
+            vhe_run "$dir" "$app" &
+            running+=($!); caseOf[$!]=$dir
         done
+        sleep 5
+        for i in "${!running[@]}"; do
+            pid=${running[$i]}
+            if ! kill -0 "$pid" 2>/dev/null; then
+                wait "$pid" || failed=1
+                echo "  [$(basename "${caseOf[$pid]}")] finished"
+                unset "running[$i]"
+            fi
+        done
+        running=("${running[@]}")
+        if [ $(( $(date +%s) % 20 )) -lt 5 ]; then
+            for pid in "${running[@]}"; do
+                dir=${caseOf[$pid]}
+                echo "  [$(basename "$dir")] $(grep "^Progress:" "$dir/log.$app" 2>/dev/null | tail -1)"
+            done
+        fi
     done
+    return $failed
 }

@@ -11,7 +11,7 @@ Description
     \verbatim
     maxDepth    5;              // sub-cell integration levels (optional)
     bodies
-    (
+    {
         ball                    // one body
         {
             material    rubber; // a solid of constant/vheProperties
@@ -34,7 +34,7 @@ Description
             n           (4 4 1);// lattice
             min (x y z); max (x y z);   // optional region, default: mesh
         }
-    );
+    }
     \endverbatim
 
     In a 2D case (z empty) bodies are disks (cylinders along z, infinite)
@@ -231,12 +231,16 @@ int main(int argc, char *argv[])
 
     // ---- Read every body (all checks before anything is written)
     DynamicList<body> bodies;
-    const PtrList<entry> entries(bodiesDict.lookup("bodies"));
-    for (const entry& e : entries)
+    if (!bodiesDict.isDict("bodies"))
+    {
+        FatalIOErrorInFunction(bodiesDict)
+            << "No 'bodies' sub-dictionary" << exit(FatalIOError);
+    }
+    for (const entry& e : bodiesDict.subDict("bodies"))
     {
         if (!e.isDict())
         {
-            FatalIOErrorInFunction(bodiesDict)
+            FatalIOErrorInFunction(bodiesDict.subDict("bodies"))
                 << "bodies: entry '" << e.keyword() << "' is not a dictionary"
                 << exit(FatalIOError);
         }

@@ -1,0 +1,120 @@
+#!/bin/bash
+# Bad input: each malformed case must stop with a FOAM FATAL (IO) ERROR that
+# names the file (and entry) at fault, exit non-zero and write nothing.
+. "$(dirname "$0")/lib.sh"
+
+base="$WORK/base"
+channelCase "$base" cells=16 nDisks=2 endTime=0.05 || { fail setup "blockMesh"; finish; }
+cat > "$base/constant/vheProperties" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
+fluids { liquid { rho [1 -3 0 0 0 0 0] 1; mu [1 -1 -1 0 0 0 0] 1; } }
+solids { rubber { rho [1 -3 0 0 0 0 0] 1; nu [0 2 -1 0 0 0 0] 1; G [1 -1 -2 0 0 0 0] 0.5; } }
+bodyForce [0 1 -2 0 0 0 0] (0.098 0 0);
+DICT
+run "$base" setBodies || { fail setup "setBodies: $base/log.setBodies"; finish; }
+
+# variant NAME: a fresh copy of the valid base case in $WORK/NAME
+variant() { rm -rf "${WORK:?}/$1"; cp -r "$base" "$WORK/$1"; echo "$WORK/$1"; }
+
+# Checksum of every file of a case but the logs
+snapshot() { (cd "$1" && find . -type f ! -name 'log.*' -exec md5sum {} + | sort | md5sum); }
+
+# expectFatal NAME DIR APP 'REGEX THE MESSAGE MUST MATCH' 'FILE IT MUST NAME'
+expectFatal() {
+    local name=$1 dir=$2 app=$3 what=$4 file=$5 before
+    before=$(snapshot "$dir")
+    if run "$dir" "$app"; then
+        fail "$name" "$app succeeded on bad input ($dir)"; return
+    fi
+    local log="$dir/log.$app"
+    if ! grep -q "FOAM FATAL" "$log"; then
+        fail "$name" "no FOAM FATAL error in $log"
+    elif ! grep -Eq "$what" "$log"; then
+        fail "$name" "message does not say '$what': $log"
+    elif ! sed -n '/FOAM FATAL/,$p' "$log" | grep -q "$file"; then
+        fail "$name" "message does not name the file $file: $log"
+    elif [ "$before" != "$(snapshot "$dir")" ]; then
+        fail "$name" "files were written: $dir"
+    else
+        pass "$name" "$(grep -E "$what" "$log" | head -1 | sed 's/^ *//')"
+    fi
+}
+
+# setFirstCell FILE VALUE: the first cell value of a nonuniform field
+setFirstCell() {
+    python3 - "$1" "$2" <<'PY'
+import sys
+path, value = sys.argv[1:3]
+lines = open(path).read().split("\n")
+i = next(k for k, l in enumerate(lines) if l.startswith("internalField"))
+i = lines.index("(", i)
+lines[i + 1] = value
+open(path, "w").write("\n".join(lines))
+PY
+}
+
+setEntry() { foamDictionary -entry "$2" -set "$3" "$1" > /dev/null; }
+delEntry() { foamDictionary -entry "$2" -remove "$1" > /dev/null; }
+P=constant/vheProperties
+
+# ---- vheFoam: constant/vheProperties
+d=$(variant missingG); delEntry "$d/$P" solids/rubber/G
+expectFatal missingG "$d" vheFoam "Entry 'G' not found" vheProperties
+d=$(variant negativeG); setEntry "$d/$P" solids/rubber/G "[1 -1 -2 0 0 0 0] -1"
+expectFatal negativeG "$d" vheFoam "G of rubber must be positive" vheProperties
+d=$(variant negativeRho); setEntry "$d/$P" fluids/liquid/rho "[1 -3 0 0 0 0 0] -1"
+expectFatal negativeRho "$d" vheFoam "rho of liquid must be positive" vheProperties
+d=$(variant missingViscosity); delEntry "$d/$P" fluids/liquid/mu
+expectFatal missingViscosity "$d" vheFoam "exactly one of 'mu'" vheProperties
+d=$(variant negativeNu); setEntry "$d/$P" solids/rubber/nu "[0 2 -1 0 0 0 0] -2"
+expectFatal negativeNu "$d" vheFoam "must not be negative" vheProperties
+d=$(variant wrongDimensionsG); setEntry "$d/$P" solids/rubber/G "[0 2 -2 0 0 0 0] 0.5"
+expectFatal wrongDimensionsG "$d" vheFoam "do not match the expected dimensions" vheProperties
+d=$(variant unknownPhaseEntry); setEntry "$d/$P" solids/rubber/E "[1 -1 -2 0 0 0 0] 1"
+expectFatal unknownPhaseEntry "$d" vheFoam "Unknown entry 'E'" vheProperties
+d=$(variant noFluids); delEntry "$d/$P" fluids
+expectFatal noFluids "$d" vheFoam "No 'fluids'" vheProperties
+
+# ---- vheFoam: fields in 0/
+d=$(variant alphaSumNot1); setFirstCell "$d/0/alpha.liquid" 0.8
+expectFatal alphaSumNot1 "$d" vheFoam "do not sum to 1" "$d/0"
+d=$(variant alphaOutOfRange); setFirstCell "$d/0/alpha.rubber" 1.5
+expectFatal alphaOutOfRange "$d" vheFoam "outside \[0, 1\]" alpha.rubber
+d=$(variant unknownAlpha); cp "$d/0/alpha.rubber" "$d/0/alpha.oil"
+expectFatal unknownAlpha "$d" vheFoam "names no phase" alpha.oil
+d=$(variant missingAlpha); rm "$d/0/alpha.liquid"
+expectFatal missingAlpha "$d" vheFoam "has no field file" alpha.liquid
+d=$(variant BstarNotPSD)
+setFirstCell "$d/0/Bstar" "(1 2 0 1 0 1)"
+expectFatal BstarNotPSD "$d" vheFoam "not positive semi-definite" Bstar
+
+# ---- setBodies: system/setBodiesDict
+B=system/setBodiesDict
+writeBodies() {
+    cat > "$1/$B" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
+bodies { $2 }
+DICT
+}
+d=$(variant unknownMaterial)
+writeBodies "$d" "b { material steel; shape cylinder; centre (0.5 0.5 0.5); radius 0.1; }"
+expectFatal unknownMaterial "$d" setBodies "material 'steel' is not a solid" setBodiesDict
+d=$(variant bodyOutsideMesh)
+writeBodies "$d" "b { material rubber; shape cylinder; centre (0.5 1.5 0.5); radius 0.1; }"
+expectFatal bodyOutsideMesh "$d" setBodies "outside the mesh" setBodiesDict
+d=$(variant sphereIn2D)
+writeBodies "$d" "b { material rubber; shape sphere; centre (0.5 0.5 0.5); radius 0.1; }"
+expectFatal sphereIn2D "$d" setBodies "3D shape" setBodiesDict
+d=$(variant packingCannotFit)
+writeBodies "$d" "p { material rubber; packing random; count 400; radius 0.05; gap 0.01; seed 3; }"
+expectFatal packingCannotFit "$d" setBodies "only [0-9]+ of 400 bodies" setBodiesDict
+d=$(variant unknownShape)
+writeBodies "$d" "b { material rubber; shape torus; centre (0.5 0.5 0.5); radius 0.1; }"
+expectFatal unknownShape "$d" setBodies "Unknown shape 'torus'" setBodiesDict
+d=$(variant negativeRadius)
+writeBodies "$d" "b { material rubber; shape cylinder; centre (0.5 0.5 0.5); radius -0.1; }"
+expectFatal negativeRadius "$d" setBodies "radius of b must be positive" setBodiesDict
+d=$(variant overlappingBodies)
+writeBodies "$d" "a { material rubber; shape cylinder; centre (0.5 0.5 0.5); radius 0.2; } b { material rubber; shape cylinder; centre (0.6 0.5 0.5); radius 0.2; }"
+expectFatal overlappingBodies "$d" setBodies "Bodies overlap" setBodiesDict
+finish
