@@ -28,8 +28,8 @@ GP
 profiles=""
 for d in cases/*/; do
     n=$(basename "$d")
-    last=$(ls -d "$d"postProcessing/profile/*/ | sort -t/ -k4 -g | tail -1)
-    profiles="$profiles '${last}midChannel_U.xy' u 1:2 w l lw 2 t '$n',"
+    last=$(cd "$d/postProcessing/profile" && ls | sort -g | tail -1)
+    profiles="$profiles '$d/postProcessing/profile/$last/midChannel_U.xy' u 1:2 w l lw 2 t '$n',"
 done
 f=$(foamDictionary -entry f -value parameters)
 mu=$(foamDictionary -entry mu -value parameters)
@@ -40,7 +40,7 @@ set output 'results/profiles.png'
 set xlabel 'x_2 [m]'; set ylabel 'u_1 at x_1 = L/2, final time [m/s]'; set grid
 set title 'Velocity profiles across the channel'
 set key bottom center
-plot ${profiles%,} \
+plot $profiles \
      $f/(2*$mu)*x*($L - x) dt 2 lc rgb 'black' t 'Poiseuille, no disks'
 GP
 

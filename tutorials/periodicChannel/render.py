@@ -6,8 +6,8 @@ import sys
 
 from paraview.simple import (CellDatatoPointData, ColorBy, Contour,
                              CreateView, GetColorTransferFunction,
-                             OpenFOAMReader, SaveScreenshot, Show, Slice,
-                             Text)
+                             GetScalarBar, OpenFOAMReader, SaveScreenshot,
+                             Show, Slice, Text)
 
 foam, out = sys.argv[1:3]
 reader = OpenFOAMReader(FileName=foam)
@@ -39,10 +39,14 @@ shown = Show(cut, view)
 ColorBy(shown, ("CELLS", "vorticity", "Z"))
 lut = GetColorTransferFunction("vorticity")
 lut.ApplyPreset("Cool to Warm", True)
-w = 0.1
+w = 0.06   # wall vorticity of the disk-free channel is f h / (2 nu) = 0.049
 lut.RescaleTransferFunction(-w, w)
 shown.SetScalarBarVisibility(view, True)
-bar = lut  # scalar bar title
+bar = GetScalarBar(lut, view)
+bar.Title = "vorticity z [1/s]"
+bar.ComponentTitle = ""
+bar.TitleColor = [0, 0, 0]
+bar.LabelColor = [0, 0, 0]
 lines = Show(edges, view)
 ColorBy(lines, None)
 lines.AmbientColor = [0, 0, 0]
