@@ -219,3 +219,108 @@ void vhe_bstar_undeformed(size_t n, const double *phis, double *Bstar)
         B[3] = sp; B[4] = 0.0; B[5] = sp;
     }
 }
+
+void vhe_b_from_bstar(size_t n, const double *phis, const double *Bstar,
+                      double phis_min, double *B)
+{
+    size_t c;
+    int k;
+
+    for (c = 0; c < n; ++c) {
+        const double *Bs = Bstar + 6 * c;
+        double *b = B + 6 * c;
+        if (phis[c] > phis_min) {
+            const double r = 1.0 / sqrt(phis[c]);
+            for (k = 0; k < 6; ++k) {
+                b[k] = r * Bs[k];
+            }
+        } else {
+            b[0] = 1.0; b[1] = 0.0; b[2] = 0.0;
+            b[3] = 1.0; b[4] = 0.0; b[5] = 1.0;
+        }
+    }
+}
+
+void vhe_bdonor_internal(size_t nf, const int32_t *owner,
+                         const int32_t *neighbour, const double *a,
+                         const double *B, double *out, double *W, double *S)
+{
+    size_t f;
+    int k;
+
+    for (f = 0; f < nf; ++f) {
+        /* from: the donor cell, to: the receiving cell */
+        const int32_t from = a[f] >= 0.0 ? owner[f] : neighbour[f];
+        const int32_t to = a[f] >= 0.0 ? neighbour[f] : owner[f];
+        const double v = fabs(a[f]);
+        const double *Bd = B + 6 * (size_t)from;
+        double *s = S + 6 * (size_t)to;
+        out[from] += v;
+        W[to] += v;
+        for (k = 0; k < 6; ++k) {
+            s[k] += v * Bd[k];
+        }
+    }
+}
+
+void vhe_bdonor_boundary(size_t nf, const int32_t *face_cells,
+                         const double *a, const double *Bnb, double *out,
+                         double *W, double *S)
+{
+    size_t f;
+    int k;
+
+    for (f = 0; f < nf; ++f) {
+        const int32_t c = face_cells[f];
+        if (a[f] >= 0.0) {
+            out[c] += a[f];
+        } else {
+            const double v = -a[f];
+            double *s = S + 6 * (size_t)c;
+            W[c] += v;
+            for (k = 0; k < 6; ++k) {
+                s[k] += v * Bnb[6 * f + k];
+            }
+        }
+    }
+}
+
+size_t vhe_bdonor_finish(size_t n, const double *V, const double *phis0,
+                         const double *phis, const double *Bold,
+                         const double *out, const double *W, const double *S,
+                         double phis_min, double *Bstar)
+{
+    size_t c, flushed = 0;
+    int k;
+
+    for (c = 0; c < n; ++c) {
+        double *Bs = Bstar + 6 * c;
+        if (phis[c] > phis_min) {
+            const double *b0 = Bold + 6 * c;
+            const double *s = S + 6 * c;
+            double w0 = phis0[c] * V[c] - out[c];
+            double wsum, r;
+            if (w0 < 0.0) {
+                w0 = 0.0;
+                if (phis0[c] > phis_min) {
+                    ++flushed;
+                }
+            }
+            wsum = w0 + W[c];
+            if (wsum > 0.0) {
+                r = sqrt(phis[c]) / wsum;
+                for (k = 0; k < 6; ++k) {
+                    Bs[k] = r * (w0 * b0[k] + s[k]);
+                }
+            } else {
+                /* solid appeared without a donor (round-off): undeformed */
+                r = sqrt(phis[c]);
+                Bs[0] = r; Bs[1] = 0.0; Bs[2] = 0.0;
+                Bs[3] = r; Bs[4] = 0.0; Bs[5] = r;
+            }
+        } else {
+            Bs[0] = Bs[1] = Bs[2] = Bs[3] = Bs[4] = Bs[5] = 0.0;
+        }
+    }
+    return flushed;
+}

@@ -80,6 +80,44 @@ void vhe_stretch(size_t n, double dt, const double *gradU, double *Bstar);
 void vhe_clip_fluid(size_t n, const double *phis, double phis_min,
                     double *Bstar);
 
+/*
+ * B = B* / phi_s^(1/2) where phis > phis_min, else I (the neutral value a
+ * donor cell without solid lends to a vanishing solid flux).
+ */
+void vhe_b_from_bstar(size_t n, const double *phis, const double *Bstar,
+                      double phis_min, double *B);
+
+/*
+ * Donor-cell transport of B with the solid volume flux, written so that
+ * the new B is a convex combination of old B values (hence symmetric
+ * positive definite whenever they are, and exactly unchanged for a uniform
+ * B).  Three steps, called by the framework:
+ *
+ * 1. vhe_bdonor_internal over the internal faces (owner -> neighbour) and
+ *    vhe_bdonor_boundary over boundary faces: a[f] is the solid volume
+ *    crossing face f during the step [m^3] (flux * dt, positive out of the
+ *    owner); B is the old B per cell (B* / phi_s^(1/2), I without solid);
+ *    Bnb[f] is the B on the far side of a boundary face (the coupled
+ *    neighbour's value, or the boundary value).  They accumulate, per cell,
+ *    out[c] [m^3] the solid volume leaving, W[c] [m^3] the volume entering
+ *    and S[c] (6 per cell) [m^3] the entering volume times its B.
+ *    out, W and S start at 0.
+ * 2. vhe_bdonor_finish: per cell, the solid left in place is
+ *    w0 = max(phis0 V - out, 0) and B_new = (w0 B_old + S) / (w0 + W);
+ *    B*_new = phis^(1/2) B_new where phis > phis_min, else 0.  Returns the
+ *    number of solid cells whose old content left entirely (w0 clipped).
+ */
+void vhe_bdonor_internal(size_t nf, const int32_t *owner,
+                         const int32_t *neighbour, const double *a,
+                         const double *B, double *out, double *W, double *S);
+void vhe_bdonor_boundary(size_t nf, const int32_t *face_cells,
+                         const double *a, const double *Bnb, double *out,
+                         double *W, double *S);
+size_t vhe_bdonor_finish(size_t n, const double *V, const double *phis0,
+                         const double *phis, const double *Bold,
+                         const double *out, const double *W, const double *S,
+                         double phis_min, double *Bstar);
+
 /* Sets B* = phi_s^(1/2) I (undeformed solid, zero in fluid). */
 void vhe_bstar_undeformed(size_t n, const double *phis, double *Bstar);
 

@@ -430,6 +430,113 @@ START_TEST(test_clip_and_undeformed)
 }
 END_TEST
 
+START_TEST(test_b_from_bstar)
+{
+    /* B = [[1+g^2, g, 0],[g, 1, 0],[0, 0, 1]] (simple shear, det 1) in a
+     * solid cell (phi_s 0.64), an edge cell (phi_s 1e-3) and a fluid cell. */
+    const double g = 0.7;
+    const double phis[3] = {0.64, 1e-3, 0.0};
+    const double Bexact[6] = {1.0 + g * g, g, 0.0, 1.0, 0.0, 1.0};
+    double Bs[18], B[18];
+    int c, k;
+
+    for (c = 0; c < 3; ++c) {
+        for (k = 0; k < 6; ++k) {
+            Bs[6 * c + k] = sqrt(phis[c]) * Bexact[k];
+        }
+    }
+    vhe_b_from_bstar(3, phis, Bs, 1e-6, B);
+    for (k = 0; k < 6; ++k) {
+        ASSERT_NEAR(B[k], Bexact[k], 1e-14);
+        ASSERT_NEAR(B[6 + k], Bexact[k], 1e-12);
+    }
+    /* no solid: the neutral donor value I */
+    ck_assert(B[12] == 1.0 && B[15] == 1.0 && B[17] == 1.0);
+    ck_assert(B[13] == 0.0 && B[14] == 0.0 && B[16] == 0.0);
+}
+END_TEST
+
+START_TEST(test_bdonor)
+{
+    /* Three unit cells in a row, faces 0->1 and 1->2, solid leaving cell 0
+     * to the right; a boundary face feeds cell 0 from outside. */
+    const int32_t owner[2] = {0, 1}, neighbour[2] = {1, 2}, bcell[1] = {0};
+    const double V[3] = {1, 1, 1};
+    const double a[2] = {0.2, 0.1}, ab[1] = {-0.1};
+    const double Ba[6] = {2, 0.5, 0, 1, 0, 0.5};      /* SPD, det 0.875 */
+    const double Bb[6] = {1, -0.3, 0.1, 2, 0, 1};
+    const double Bc[6] = {1, 0, 0, 1, 0, 1};
+    const double phis0[3] = {1, 0.5, 0};
+    const double phis[3] = {0.9, 0.6, 0.1};            /* after the fluxes */
+    double B[18], out[3] = {0}, W[3] = {0}, S[18] = {0}, Bs[18], lam[3];
+    int k, c;
+    size_t flushed;
+
+    for (k = 0; k < 6; ++k) {
+        B[k] = Ba[k]; B[6 + k] = Bb[k]; B[12 + k] = Bc[k];
+    }
+    vhe_bdonor_internal(2, owner, neighbour, a, B, out, W, S);
+    vhe_bdonor_boundary(1, bcell, ab, Bc, out, W, S);
+    flushed = vhe_bdonor_finish(3, V, phis0, phis, B, out, W, S, 1e-6, Bs);
+    ck_assert_uint_eq(flushed, 0);
+    for (k = 0; k < 6; ++k) {
+        /* cell 0 keeps 0.8 of Ba and receives 0.1 of Bc */
+        ASSERT_NEAR(Bs[k], sqrt(0.9) * (0.8 * Ba[k] + 0.1 * Bc[k]) / 0.9, 1e-14);
+        /* cell 1 keeps 0.4 of Bb and receives 0.2 of Ba */
+        ASSERT_NEAR(Bs[6 + k], sqrt(0.6) * (0.4 * Bb[k] + 0.2 * Ba[k]) / 0.6, 1e-14);
+        /* cell 2 had no solid: all of it is Bb from cell 1 */
+        ASSERT_NEAR(Bs[12 + k], sqrt(0.1) * Bb[k], 1e-14);
+    }
+    /* solid-weighted B is conserved: what entered minus what left */
+    for (k = 0; k < 6; ++k) {
+        double before = 0, after = 0;
+        for (c = 0; c < 3; ++c) {
+            before += phis0[c] * V[c] * B[6 * c + k];
+            after += sqrt(phis[c]) * V[c] * Bs[6 * c + k];
+        }
+        ASSERT_NEAR(after, before + 0.1 * Bc[k], 1e-14);
+    }
+    for (c = 0; c < 3; ++c) {
+        vhe_sym_eigenvalues(Bs + 6 * c, lam);
+        ck_assert(lam[0] > 0.0);
+    }
+
+    /* uniform B stays exactly uniform, whatever the fluxes */
+    for (c = 0; c < 3; ++c) {
+        for (k = 0; k < 6; ++k) {
+            B[6 * c + k] = Bb[k];
+        }
+        out[c] = W[c] = 0;
+    }
+    for (k = 0; k < 18; ++k) {
+        S[k] = 0;
+    }
+    vhe_bdonor_internal(2, owner, neighbour, a, B, out, W, S);
+    vhe_bdonor_boundary(1, bcell, ab, Bb, out, W, S);
+    vhe_bdonor_finish(3, V, phis0, phis, B, out, W, S, 1e-6, Bs);
+    for (c = 0; c < 3; ++c) {
+        for (k = 0; k < 6; ++k) {
+            ASSERT_NEAR(Bs[6 * c + k], sqrt(phis[c]) * Bb[k], 1e-14);
+        }
+    }
+
+    /* a cell whose content leaves entirely takes what entered */
+    {
+        const double p0[1] = {0.1}, p1[1] = {0.1}, o[1] = {0.3};
+        const double w[1] = {0.3};
+        double s1[6], bs[6];
+        for (k = 0; k < 6; ++k) {
+            s1[k] = 0.3 * Bb[k];
+        }
+        ck_assert_uint_eq(vhe_bdonor_finish(1, V, p0, p1, Ba, o, w, s1,
+                                            1e-6, bs), 1);
+        for (k = 0; k < 6; ++k) {
+            ASSERT_NEAR(bs[k], sqrt(0.1) * Bb[k], 1e-14);
+        }
+    }
+}
+END_TEST
+
 static Suite *stretch_suite(void)
 {
     Suite *s = suite_create("stretch");
@@ -440,6 +547,8 @@ static Suite *stretch_suite(void)
     tcase_add_test(tc, test_stretch_huge_dt);
     tcase_add_test(tc, test_stretch_composition);
     tcase_add_test(tc, test_clip_and_undeformed);
+    tcase_add_test(tc, test_b_from_bstar);
+    tcase_add_test(tc, test_bdonor);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -102,13 +102,73 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
 }
 
 
-void Foam::vheElasticity::advect(const surfaceScalarField& phi)
+void Foam::vheElasticity::advect(scalar deltaT)
 {
-    fvSymmTensorMatrix BEqn
+    const volScalarField& phis = mixture_.phis();
+    const volScalarField& phis0 = phis.oldTime();
+    const scalar phisMin = mixture_.solidFractionMin();
+    const label nCells = mesh_.nCells();
+
+    // Old B of the solid; I where there is none
+    volSymmTensorField B0
     (
-        fvm::ddt(Bstar_) + fvm::div(phi, Bstar_, "div(phi,Bstar)")
+        IOobject("B", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedSymmTensor(dimless, Zero),
+        patchTypes(mesh_)
     );
-    BEqn.solve();
+    vhe_b_from_bstar
+    (
+        nCells, phis0.primitiveField().cdata(),
+        flat(Bstar_.oldTime().primitiveField()), phisMin,
+        flat(B0.primitiveFieldRef())
+    );
+    B0.correctBoundaryConditions();
+
+    // Solid volume crossing each face over the step [m^3]
+    const surfaceScalarField& aPhi = mixture_.alphaPhiSolid();
+    const scalarField a(deltaT*aPhi.primitiveField());
+
+    scalarField out(nCells, 0), W(nCells, 0);
+    symmTensorField S(nCells, Zero);
+
+    vhe_bdonor_internal
+    (
+        mesh_.nInternalFaces(), mesh_.owner().cdata(),
+        mesh_.neighbour().cdata(), a.cdata(), flat(B0.primitiveField()),
+        out.data(), W.data(), flat(S)
+    );
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatchSymmTensorField& Bp = B0.boundaryField()[patchi];
+        if (Bp.empty()) continue;
+        // Across a coupled patch the donor is the neighbour cell; at any
+        // other boundary, the boundary value
+        const symmTensorField Bnb
+        (
+            Bp.coupled() ? Bp.patchNeighbourField()() : symmTensorField(Bp)
+        );
+        const scalarField ap(deltaT*aPhi.boundaryField()[patchi]);
+        vhe_bdonor_boundary
+        (
+            ap.size(), mesh_.boundary()[patchi].faceCells().cdata(),
+            ap.cdata(), flat(Bnb), out.data(), W.data(), flat(S)
+        );
+    }
+
+    const size_t flushed = vhe_bdonor_finish
+    (
+        nCells, mesh_.V().cdata(), phis0.primitiveField().cdata(),
+        phis.primitiveField().cdata(), flat(B0.primitiveField()),
+        out.cdata(), W.cdata(), flat(S), phisMin,
+        flat(Bstar_.primitiveFieldRef())
+    );
+    const label nFlushed = returnReduce(label(flushed), sumOp<label>());
+    if (nFlushed)
+    {
+        Info<< "B advection: " << nFlushed << " solid cells renewed entirely"
+            << " in one step (reduce maxAlphaCo if this persists)" << endl;
+    }
 }
 
 

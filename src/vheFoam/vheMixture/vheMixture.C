@@ -199,7 +199,12 @@ Foam::tmp<Foam::surfaceScalarField> Foam::vheMixture::nHatf
 }
 
 
-void Foam::vheMixture::solveAlphaStep(scalar cAlpha, scalar deltaT)
+void Foam::vheMixture::solveAlphaStep
+(
+    scalar cAlpha,
+    scalar deltaT,
+    scalar weight
+)
 {
     const word alphaScheme("div(phi,alpha)");
     const word alpharScheme("div(phirb,alpha)");
@@ -269,6 +274,10 @@ void Foam::vheMixture::solveAlphaStep(scalar cAlpha, scalar deltaT)
         alpha.correctBoundaryConditions();
 
         rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, phases_[i].rho);
+        if (phases_[i].solid)
+        {
+            *alphaPhiSolid_ += weight*alphaPhi;
+        }
         sumAlpha += alpha.primitiveField();
     }
 
@@ -424,6 +433,16 @@ Foam::vheMixture::vheMixture
                 dimensionedScalar(dimless, Zero)
             )
         );
+        alphaPhiSolid_.reset
+        (
+            new surfaceScalarField
+            (
+                IOobject("alphaPhiSolid", mesh_.time().timeName(), mesh_,
+                         IOobject::NO_READ, IOobject::NO_WRITE),
+                mesh_,
+                dimensionedScalar(dimVolume/dimTime, Zero)
+            )
+        );
         Ghat_.reset
         (
             new volScalarField
@@ -438,6 +457,7 @@ Foam::vheMixture::vheMixture
 
     correct();
     rho_.oldTime();
+    if (nSolids_) phis_->oldTime();
 
     // Initial mass flux consistent with the fractions
     rhoPhi_ = fvc::interpolate(rho_)*phi_;
@@ -520,9 +540,14 @@ void Foam::vheMixture::solve()
 
     const scalar deltaT = mesh_.time().deltaTValue();
 
+    if (nSolids_)
+    {
+        *alphaPhiSolid_ = dimensionedScalar(dimVolume/dimTime, Zero);
+    }
+
     if (nSub == 1)
     {
-        solveAlphaStep(cAlpha, deltaT);
+        solveAlphaStep(cAlpha, deltaT, 1);
     }
     else
     {
@@ -541,7 +566,7 @@ void Foam::vheMixture::solve()
             {
                 for (volScalarField& alpha : alphas_) alpha.oldTime() == alpha;
             }
-            solveAlphaStep(cAlpha, deltaT/nSub);
+            solveAlphaStep(cAlpha, deltaT/nSub, 1.0/nSub);
             rhoPhiSum += rhoPhi_/scalar(nSub);
         }
         forAll(alphas_, i) alphas_[i].oldTime() == alpha0[i];
