@@ -16,27 +16,10 @@ mv "$par/log.mpirun" "$par/log.setBodies"
 run "$par" mpirun -np 2 vheFoam -parallel || fail parallelRun "$par/log.mpirun"
 run "$par" reconstructPar -withZero || fail reconstructPar "$par/log.reconstructPar"
 
-# maxDiff FIELD TIME: max |a - b| between the two runs, and max |a|
-maxDiff() {
-    python3 - "$ser/$2/$1" "$par/$2/$1" <<'PY'
-import re, sys
-def cells(p):
-    s = open(p).read()
-    i = s.index("(", s.index("internalField")); n = int(s[s.index(">", s.index("internalField")) + 1:i])
-    body = s[i + 1:s.index("\n)\n", i)]
-    nums = [float(x) for x in re.findall(r"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?", body)]
-    per = len(nums) // n if n else 1
-    return [nums[k * per:(k + 1) * per] for k in range(n)]
-a, b = cells(sys.argv[1]), cells(sys.argv[2])
-d = max(abs(x - y) for u, v in zip(a, b) for x, y in zip(u, v))
-m = max(abs(x) for u in a for x in u)
-print(d, m)
-PY
-}
-read -r d m <<< "$(maxDiff alpha.rubber 0)"
+read -r d m <<< "$(python3 "$TESTS_DIR/fieldDiff.py" "$ser" "$par" 0 alpha.rubber)"
 check setBodiesParallel "$d < 1e-12" "max |alpha serial - parallel| = $d at t = 0"
-read -r d m <<< "$(maxDiff U 0.5)"
+read -r d m <<< "$(python3 "$TESTS_DIR/fieldDiff.py" "$ser" "$par" 0.5 U)"
 check solverParallel "$d < 1e-5*$m" "max |U serial - parallel| = $d (max |U| $m) at t = 0.5"
-read -r d m <<< "$(maxDiff Bstar 0.5)"
+read -r d m <<< "$(python3 "$TESTS_DIR/fieldDiff.py" "$ser" "$par" 0.5 Bstar)"
 check BstarParallel "$d < 1e-5*$m" "max |B* serial - parallel| = $d at t = 0.5"
 finish

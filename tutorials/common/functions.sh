@@ -27,7 +27,7 @@ vhe_run()
 vhe_run_pool()
 {
     local n=$1 app=$2; shift 2
-    local queue=("$@") running=() failed=0 pid dir i
+    local queue=("$@") running=() failed=0 pid dir i tick=0
     declare -A caseOf
     while [ ${#queue[@]} -gt 0 ] || [ ${#running[@]} -gt 0 ]; do
         while [ ${#running[@]} -lt "$n" ] && [ ${#queue[@]} -gt 0 ]; do
@@ -45,7 +45,8 @@ vhe_run_pool()
             fi
         done
         running=("${running[@]}")
-        if [ $(( $(date +%s) % 20 )) -lt 5 ]; then
+        tick=$((tick + 1))
+        if [ $((tick % 4)) = 0 ]; then
             for pid in "${running[@]}"; do
                 dir=${caseOf[$pid]}
                 echo "  [$(basename "$dir")] $(grep "^Progress:" "$dir/log.$app" 2>/dev/null | tail -1)"

@@ -1,0 +1,58 @@
+"""pvbatch: free surface (alpha.liquid = 0.5, blue) and bodies (phi_s = 0.5,
+orange) of a dam-break case at the given times.
+
+Usage: pvbatch render.py CASE.foam OUTPREFIX T1 [T2 ...]
+Writes OUTPREFIX_t<T>.png for each time.
+"""
+import sys
+
+from paraview.simple import (CellDatatoPointData, Contour, CreateView,
+                             OpenFOAMReader, SaveScreenshot, Show, Text,
+                             Outline)
+
+foam, prefix = sys.argv[1:3]
+times = [float(t) for t in sys.argv[3:]]
+reader = OpenFOAMReader(FileName=foam)
+reader.MeshRegions = ["internalMesh"]
+reader.CellArrays = ["alpha.liquid", "phis"]
+reader.UpdatePipelineInformation()
+available = list(reader.TimestepValues)
+
+points = CellDatatoPointData(Input=reader)
+surface = Contour(Input=points, ContourBy=["POINTS", "alpha.liquid"],
+                  Isosurfaces=[0.5])
+bodies = Contour(Input=points, ContourBy=["POINTS", "phis"],
+                 Isosurfaces=[0.5])
+box = Outline(Input=reader)
+
+view = CreateView("RenderView")
+view.ViewSize = [1200, 700]
+view.OrientationAxesVisibility = 1
+view.Background = [1, 1, 1]
+try:
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+
+s = Show(surface, view)
+s.DiffuseColor = [0.3, 0.55, 0.9]
+s.Opacity = 0.45
+b = Show(bodies, view)
+b.DiffuseColor = [0.95, 0.5, 0.1]
+o = Show(box, view)
+o.DiffuseColor = [0, 0, 0]
+o.AmbientColor = [0, 0, 0]
+label = Text()
+lshow = Show(label, view)
+lshow.Color = [0, 0, 0]
+lshow.WindowLocation = "Upper Center"
+
+view.CameraPosition = [1.05 + 1.2, -2.6, 2.0]
+view.CameraFocalPoint = [1.05, 0.5, 0.35]
+view.CameraViewUp = [0, 0, 1]
+for t in times:
+    tt = min(available, key=lambda x: abs(x - t))
+    view.ViewTime = tt
+    label.Text = "%s  t = %g" % (foam.split("/")[-1][:-5], tt)
+    SaveScreenshot("%s_t%g.png" % (prefix, t), view,
+                   ImageResolution=[1200, 700])
