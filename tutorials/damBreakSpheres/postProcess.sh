@@ -21,7 +21,7 @@ set title 'Dam break with four visco-hyperelastic spheres: liquid level on the l
 plot ${plots%,}
 GP
 
-# Free surface (alpha.liquid = 0.5) and bodies (phi_s = 0.5)
+# Free surface (alpha.gas = 0.5) and bodies (phi_s = 0.5)
 for n in G10 G0.1; do
     d=cases/$n
     [ -d "$d" ] || continue

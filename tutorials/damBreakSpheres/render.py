@@ -1,4 +1,4 @@
-"""pvbatch: free surface (alpha.liquid = 0.5, blue) and bodies (phi_s = 0.5,
+"""pvbatch: free surface (alpha.gas = 0.5, blue) and bodies (phi_s = 0.5,
 orange) of a dam-break case at the given times.
 
 Usage: pvbatch render.py CASE.foam OUTPREFIX T1 [T2 ...]
@@ -6,20 +6,20 @@ Writes OUTPREFIX_t<T>.png for each time.
 """
 import sys
 
-from paraview.simple import (CellDatatoPointData, Contour, CreateView,
-                             OpenFOAMReader, SaveScreenshot, Show, Text,
-                             Outline)
+from paraview.simple import (CellDatatoPointData, Contour,
+                             CreateView, OpenFOAMReader, Outline,
+                             SaveScreenshot, Show, Text)
 
 foam, prefix = sys.argv[1:3]
 times = [float(t) for t in sys.argv[3:]]
 reader = OpenFOAMReader(FileName=foam)
 reader.MeshRegions = ["internalMesh"]
-reader.CellArrays = ["alpha.liquid", "phis"]
+reader.CellArrays = ["alpha.gas", "phis"]
 reader.UpdatePipelineInformation()
 available = list(reader.TimestepValues)
 
 points = CellDatatoPointData(Input=reader)
-surface = Contour(Input=points, ContourBy=["POINTS", "alpha.liquid"],
+surface = Contour(Input=points, ContourBy=["POINTS", "alpha.gas"],
                   Isosurfaces=[0.5])
 bodies = Contour(Input=points, ContourBy=["POINTS", "phis"],
                  Isosurfaces=[0.5])
@@ -35,11 +35,14 @@ except AttributeError:
     pass
 
 s = Show(surface, view)
+s.ColorArrayName = ["POINTS", ""]
 s.DiffuseColor = [0.3, 0.55, 0.9]
 s.Opacity = 0.45
 b = Show(bodies, view)
+b.ColorArrayName = ["POINTS", ""]
 b.DiffuseColor = [0.95, 0.5, 0.1]
 o = Show(box, view)
+o.ColorArrayName = ["POINTS", ""]
 o.DiffuseColor = [0, 0, 0]
 o.AmbientColor = [0, 0, 0]
 label = Text()
