@@ -283,6 +283,45 @@ double vhe_min_clearance(const double lo[3], const double hi[3],
 double vhe_poiseuille_u(double f, double nu, double h, double y);
 double vhe_poiseuille_q(double f, double nu, double h);
 
+/*
+ * Oscillating Couette flow through a stack of layers (Sugiyama et al. 2011,
+ * first test; the fluid/solid/fluid variant of Parthasarathy, Bhosale and
+ * Gazzola 2022): layers j = 0..n-1 from the wall at rest at y = 0 up to the
+ * wall at y = sum h_j moving with u = V sin(w t).  Layer j has thickness
+ * h[j] [m], density rho[j], viscosity mu[j] [Pa s] and shear modulus G[j]
+ * [Pa] (0 for a fluid).  In simple shear the neo-Hookean solid is exactly
+ * linear, so the periodic state is u = Im[Vh(y) e^{i w t}] with, per layer,
+ * complex viscosity mu* = mu + G/(i w), k = sqrt(i w rho / mu*), and
+ * continuous velocity and shear stress mu* Vh' at the interfaces.  The
+ * shear strain is gamma = Im[Vh'/(i w) e^{i w t}] and, in a solid,
+ * B = [[1 + gamma^2, gamma], [gamma, 1]].
+ *
+ * vhe_couette_setup solves for the layer coefficients (at most
+ * VHE_COUETTE_MAX_LAYERS layers; VHE_EBADARG for bad input).
+ * vhe_couette_eval gives u [m/s] and gamma at height y and time t (either
+ * output may be NULL); vhe_couette_interface gives Vh at the top of layer
+ * j as (re, im).
+ */
+#define VHE_COUETTE_MAX_LAYERS 8
+
+struct vhe_couette {
+    int n;
+    double w;                                  /* [rad/s] */
+    double y0[VHE_COUETTE_MAX_LAYERS + 1];     /* layer bottoms, y0[n] top */
+    /* per layer: k, and Vh = a cosh(k (y - y0)) + b sinh(k (y - y0)) */
+    double k_re[VHE_COUETTE_MAX_LAYERS], k_im[VHE_COUETTE_MAX_LAYERS];
+    double a_re[VHE_COUETTE_MAX_LAYERS], a_im[VHE_COUETTE_MAX_LAYERS];
+    double b_re[VHE_COUETTE_MAX_LAYERS], b_im[VHE_COUETTE_MAX_LAYERS];
+};
+
+int vhe_couette_setup(struct vhe_couette *c, int n, const double *h,
+                      const double *rho, const double *mu, const double *G,
+                      double V, double w);
+void vhe_couette_eval(const struct vhe_couette *c, double y, double t,
+                      double *u, double *gamma);
+void vhe_couette_interface(const struct vhe_couette *c, int j,
+                           double *re, double *im);
+
 #ifdef __cplusplus
 }
 #endif

@@ -88,6 +88,15 @@ d=$(variant BstarNotPSD)
 setFirstCell "$d/0/Bstar" "(1 2 0 1 0 1)"
 expectFatal BstarNotPSD "$d" vheFoam "not positive semi-definite" Bstar
 
+# ---- vheFoam: constant/g, system/fvSolution
+d=$(variant gWrongDimensions); sed -i 's/^dimensions .*/dimensions [0 1 -1 0 0 0 0];/' "$d/constant/g"
+expectFatal gWrongDimensions "$d" vheFoam "g must have the dimensions of an acceleration" constant/g
+d=$(variant noPressureReference); sed -i '/pRefCell\|pRefValue/d' "$d/system/fvSolution"
+expectFatal noPressureReference "$d" vheFoam "Unable to set reference cell" fvSolution
+
+d=$(variant unknownElasticity); sed -i 's/^    pRefValue .*/&\n    elasticity implicitish;/' "$d/system/fvSolution"
+expectFatal unknownElasticity "$d" vheFoam "Unknown elasticity 'implicitish'" fvSolution
+
 # ---- setBodies: system/setBodiesDict
 B=system/setBodiesDict
 writeBodies() {

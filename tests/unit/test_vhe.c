@@ -1202,11 +1202,83 @@ START_TEST(test_poiseuille)
 }
 END_TEST
 
+START_TEST(test_couette_reference)
+{
+    /* REFERENCE.md check values: solid 0 < y < 0.5 (mu 0, G 5) under fluid
+     * 0.5 < y < 1 (mu 1), rho 1, V 1, w pi; wall at rest at y = 0. */
+    const double h[2] = {0.5, 0.5}, rho[2] = {1, 1}, mu[2] = {0, 1};
+    const double G[2] = {5, 0};
+    const double t2[11] = {0, .0923, .1827, .2695, .3511, .4257, .2947,
+                           .1836, .0956, .0335, 0};
+    const double t28[11] = {0, -.0072, -.0142, -.0209, -.0273, -.0331,
+                            .1355, .2825, .4074, .5095, .5878};
+    struct vhe_couette c;
+    double re, im, u;
+    int i;
+
+    ck_assert_int_eq(vhe_couette_setup(&c, 2, h, rho, mu, G, 1.0, PI),
+                     VHE_OK);
+    vhe_couette_interface(&c, 0, &re, &im);
+    ASSERT_NEAR(re, 0.52966, 6e-6);
+    ASSERT_NEAR(im, 0.42569, 6e-6);
+    for (i = 0; i <= 10; ++i) {
+        vhe_couette_eval(&c, 0.1 * i, 2.0, &u, NULL);
+        ASSERT_NEAR(u, t2[i], 6e-5);
+        vhe_couette_eval(&c, 0.1 * i, 2.8, &u, NULL);
+        ASSERT_NEAR(u, t28[i], 6e-5);
+    }
+}
+END_TEST
+
+START_TEST(test_couette_pde)
+{
+    /* fluid / solid / fluid (Parthasarathy et al. 2022 parameters): the
+     * solution satisfies rho du/dt = d/dy (mu du/dy + G gamma), with
+     * velocity and shear stress continuous at the interfaces. */
+    const double h[3] = {0.2, 0.2, 0.2}, rho[3] = {1, 1, 1};
+    const double mu[3] = {0.02, 0.002, 0.02}, G[3] = {0, 0.02, 0};
+    const double w = PI, t = 0.37, d = 1e-4;
+    struct vhe_couette c;
+    double y, u0, u1, um, up, g0, gm, gp, ua, ub, ga, gb, top;
+
+    ck_assert_int_eq(vhe_couette_setup(&c, 3, h, rho, mu, G, 0.4, w), VHE_OK);
+    for (y = 0.05; y < 0.6; y += 0.1) {
+        const int j = y < 0.2 ? 0 : (y < 0.4 ? 1 : 2);
+        vhe_couette_eval(&c, y, t - d, &u0, NULL);
+        vhe_couette_eval(&c, y, t + d, &u1, NULL);
+        vhe_couette_eval(&c, y - d, t, &um, &gm);
+        vhe_couette_eval(&c, y + d, t, &up, &gp);
+        vhe_couette_eval(&c, y, t, &ua, &g0);
+        /* rho du/dt against d/dy(mu du/dy + G gamma), central differences */
+        ASSERT_NEAR(rho[j] * (u1 - u0) / (2 * d),
+                    mu[j] * (up - 2 * ua + um) / (d * d)
+                    + G[j] * (gp - gm) / (2 * d), 2e-4);
+    }
+    /* interface y = 0.2: velocity and stress continuous */
+    vhe_couette_eval(&c, 0.2 - 1e-9, t, &ua, &ga);
+    vhe_couette_eval(&c, 0.2 + 1e-9, t, &ub, &gb);
+    ASSERT_NEAR(ua, ub, 1e-8);
+    vhe_couette_eval(&c, 0.2 - 2e-5, t, &um, NULL);
+    vhe_couette_eval(&c, 0.2 + 2e-5, t, &up, NULL);
+    ASSERT_NEAR(mu[0] * (ua - um) / 2e-5,
+                mu[1] * (up - ub) / 2e-5 + G[1] * gb, 2e-5);
+    /* the moving wall */
+    vhe_couette_eval(&c, 0.6, t, &top, NULL);
+    ASSERT_NEAR(top, 0.4 * sin(w * t), 1e-12);
+    vhe_couette_eval(&c, 0.0, t, &top, NULL);
+    ASSERT_NEAR(top, 0.0, 1e-14);
+    ck_assert_int_eq(vhe_couette_setup(&c, 0, h, rho, mu, G, 1, w),
+                     VHE_EBADARG);
+}
+END_TEST
+
 static Suite *exact_suite(void)
 {
     Suite *s = suite_create("exact");
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, test_poiseuille);
+    tcase_add_test(tc, test_couette_reference);
+    tcase_add_test(tc, test_couette_pde);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -73,6 +73,8 @@ int main(int argc, char *argv[])
             {
                 #include "pEqn.H"
             }
+
+            #include "BStretch.H"
         }
 
         runTime.write();

@@ -6,6 +6,7 @@
 #include "fvm.H"
 #include "fvc.H"
 #include "zeroGradientFvPatchFields.H"
+#include "fvMatrices.H"
 #include "polyPatch.H"
 #include "vhe.h"
 
@@ -62,11 +63,26 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
         dimensionedSymmTensor(dimless, Zero),
         patchTypes(mesh_)
     ),
+    semiImplicit_(true),
     sumMagSfByV_
     (
         fvc::surfaceSum(mesh_.magSf())().primitiveField()/mesh_.V()
     )
 {
+    const dictionary& pimple = mesh_.solutionDict().subDict("PIMPLE");
+    const word variant
+    (
+        pimple.getOrDefault<word>("elasticity", "semiImplicit")
+    );
+    if (variant != "semiImplicit" && variant != "explicit")
+    {
+        FatalIOErrorInFunction(pimple)
+            << "Unknown elasticity '" << variant << "'" << nl
+            << "    Valid: (semiImplicit explicit)" << exit(FatalIOError);
+    }
+    semiImplicit_ = variant == "semiImplicit";
+    Info<< "Elastic stress: " << variant << endl;
+
     if (Bstar_.headerOk())
     {
         Info<< "Read Bstar from " << Bstar_.objectPath() << endl;
@@ -217,6 +233,33 @@ Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::sigma() const
     );
     s.correctBoundaryConditions();
     return tsigma;
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::momentumSource
+(
+    const volVectorField& U,
+    scalar deltaT
+) const
+{
+    tmp<fvVectorMatrix> tS(new fvVectorMatrix(U, dimForce));
+    fvVectorMatrix& S = tS.ref();
+    S += divSigma();
+
+    if (semiImplicit_)
+    {
+        // Stress increment of the step, linearised about B = I:
+        // dt Ghat phi_s (grad U + grad U^T), the first part implicit
+        const volScalarField kElastic
+        (
+            "kElastic",
+            dimensionedScalar("deltaT", dimTime, deltaT)
+           *mixture_.Ghat()*mixture_.phis()
+        );
+        S += fvm::laplacian(kElastic, U, "laplacian(kElastic,U)");
+        S += fvc::div(kElastic*dev2(T(fvc::grad(U))), "div(sigma)");
+    }
+    return tS;
 }
 
 

@@ -1,0 +1,18 @@
+#!/bin/bash
+# Oscillating Couette flow, fluid (mu 1) over a purely elastic solid layer
+# (mu 0, G 5) -- Sugiyama et al. 2011, REFERENCE.md verification 1 -- at 40
+# cells with the interface on a cell face, semi-implicit elasticity,
+# dt = 1e-3: RMS over the period 10 <= t <= 12 of the L2 errors of u and of
+# the shear strain B_xy against the exact solution (C core).  Measured:
+# u 7.26e-3, B_xy 1.50e-2 (80 cells: 2.5e-3 and 1.0e-2).  Bounds: 1.2 x.
+. "$(dirname "$0")/lib.sh"
+
+d="$WORK/couette"
+cp -r "$VHE_ROOT/benchmarks/errorVsRuntime/couette" "$d"
+foamDictionary -entry N -set 40 "$d/system/parameters" > /dev/null
+run "$d" blockMesh && run "$d" setBodies && run "$d" vheFoam \
+    || { fail couetteRun "$d"; finish; }
+read -r eu eb <<< "$(tail -1 "$d/postProcessing/couetteError/0/couetteError.dat" | awk '{print $6, $8}')"
+check couetteVelocity "$eu < 1.2*7.26e-3" "RMS L2 error of u over a period: $eu (amplitude 1)"
+check couetteStrain "$eb < 1.2*1.50e-2" "RMS L2 error of B_xy in the solid: $eb"
+finish
