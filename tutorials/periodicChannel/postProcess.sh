@@ -21,6 +21,7 @@ set terminal pngcairo size 900,600 font ",12"
 set output 'results/flowRate.png'
 set xlabel 't [s]'; set ylabel 'Q / Q_{th}'; set grid
 set title 'Periodic channel with deformable disks: flow rate'
+set key bottom left
 Qth = $Qth
 plot ${plots%,}, 1 dt 2 lc rgb 'black' t 'no disks, exact'
 GP
