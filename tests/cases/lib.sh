@@ -49,3 +49,14 @@ flowRate() {
     awk -v t0="$2" '!/^#/ && $1 >= t0 {s += -$2; n++} END {printf "%.8g\n", s/n}' \
         "$1/postProcessing/flowRate/0/surfaceFieldValue.dat"
 }
+
+# Smallest and largest phase fraction over every step of a vheFoam log
+# ("Phase <name> volume V  fraction min, max = a b" lines): prints "lo hi"
+alphaRange() {
+    grep "^Phase .* fraction min, max" "$1" \
+        | awk 'NR == 1 {lo = $9; hi = $10} {if ($9 < lo) lo = $9; if ($10 > hi) hi = $10}
+               END {print lo, hi}'
+}
+
+# maxFieldDiff CASE_A CASE_B TIME FIELD: prints "maxAbsDifference maxAbsValue"
+maxFieldDiff() { python3 "$TESTS_DIR/fieldDiff.py" "$@"; }

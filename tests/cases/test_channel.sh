@@ -31,8 +31,7 @@ d="$WORK/G0.5"
 vols=$(awk '!/^#/{print $2}' "$d"/postProcessing/solidDiagnostics/0/solidDiagnostics.dat)
 v0=$(echo "$vols" | head -1); v1=$(echo "$vols" | tail -1)
 check solidVolumeConserved "abs($v1/$v0 - 1) < 1e-6" "solid volume $v0 -> $v1"
-lo=$(grep "^Phase .* fraction min, max" "$d/log.vheFoam" | awk '{print $9}' | sort -g | head -1)
-hi=$(grep "^Phase .* fraction min, max" "$d/log.vheFoam" | awk '{print $10}' | sort -g | tail -1)
+read -r lo hi <<< "$(alphaRange "$d/log.vheFoam")"
 check alphaBounded "$lo > -1e-6 and $hi < 1 + 1e-6" "alpha in [$lo, $hi]"
 minEig=$(awk '!/^#/{print $4}' "$d"/postProcessing/solidDiagnostics/0/solidDiagnostics.dat | sort -g | head -1)
 check BstarPSD "$minEig >= -1e-12" "min eigenvalue of B* over the run $minEig"

@@ -33,8 +33,7 @@ for phase in liquid gel; do
     check "${phase}VolumeConserved" "abs($v1/$v0 - 1) < 1e-6" \
         "$phase volume $v0 -> $v1 over $(grep -c '^Time =' "$ser/log.vheFoam") steps"
 done
-lo=$(grep "^Phase .* fraction min, max" "$ser/log.vheFoam" | awk '{print $9}' | sort -g | head -1)
-hi=$(grep "^Phase .* fraction min, max" "$ser/log.vheFoam" | awk '{print $10}' | sort -g | tail -1)
+read -r lo hi <<< "$(alphaRange "$ser/log.vheFoam")"
 check alphaBounded "$lo > -1e-6 and $hi < 1 + 1e-6" "every alpha within [$lo, $hi]"
 
 hl="$ser/postProcessing/liquidLevel/0/liquidLevel.dat"
@@ -45,9 +44,9 @@ run "$par" decomposePar || fail decomposePar "$par/log.decomposePar"
 run "$par" mpirun -np 2 vheFoam -parallel || fail parallelRun "$par/log.mpirun"
 run "$par" reconstructPar -latestTime || fail reconstructPar "$par/log.reconstructPar"
 
-read -r d m <<< "$(python3 "$TESTS_DIR/fieldDiff.py" "$ser" "$par" 0.3 alpha.liquid)"
+read -r d m <<< "$(maxFieldDiff "$ser" "$par" 0.3 alpha.liquid)"
 check parallelAlpha "$d < 1e-8" "max |alpha.liquid serial - parallel| = $d at t = 0.3"
-read -r d m <<< "$(python3 "$TESTS_DIR/fieldDiff.py" "$ser" "$par" 0.3 U)"
+read -r d m <<< "$(maxFieldDiff "$ser" "$par" 0.3 U)"
 check parallelU "$d < 1e-6*$m" "max |U serial - parallel| = $d (max |U| $m) at t = 0.3"
 d=$(paste <(awk '!/^#/{print $2}' "$hl") <(awk '!/^#/{print $2}' "$par/postProcessing/liquidLevel/0/liquidLevel.dat") \
     | awk '{d = $1 - $2; if (d < 0) d = -d; if (d > m) m = d} END {print m + 0}')
