@@ -2,7 +2,8 @@
 # Three-phase path (gas 1, liquid 1000, solid 1000 kg/m^3) on a small dam
 # break with the four spheres (scene B at 21 x 10 x 10 cells, t <= 0.3):
 #  - liquid and solid volumes conserved to 1e-6 relative over the run,
-#  - every alpha in [0, 1] within 1e-6 at every step,
+#  - every alpha in [0, 1] within 1e-6 at every step, also with two alpha
+#    sub-cycles per step,
 #  - the liquid level starts at the dam depth (0.8) on the left wall,
 #  - 2 ranks (decomposePar, mpirun) agree with serial with tight solver
 #    tolerances: alpha to 1e-8, U to 1e-6 relative (measured: 1e-10 and
@@ -24,6 +25,7 @@ sed -i 's/relTol          0.05;/relTol 0;/; s/tolerance       1e-7;/tolerance 1e
 run "$ser" blockMesh && run "$ser" setFields && run "$ser" setBodies \
     || { fail setup "$ser"; finish; }
 cp -r "$ser" "$par"
+cp -r "$ser" "$WORK/subCycled"
 run "$ser" vheFoam || fail serialRun "$ser/log.vheFoam"
 
 # volumes: first and last "Phase <name> volume V" lines
@@ -35,6 +37,15 @@ for phase in liquid gel; do
 done
 read -r lo hi <<< "$(alphaRange "$ser/log.vheFoam")"
 check alphaBounded "$lo > -1e-6 and $hi < 1 + 1e-6" "every alpha within [$lo, $hi]"
+
+# the same with two alpha sub-cycles per step
+sub="$WORK/subCycled"
+sed -i 's/nAlphaSubCycles 1;/nAlphaSubCycles 2;/' "$sub/system/fvSolution"
+run "$sub" vheFoam || fail subCycledRun "$sub/log.vheFoam"
+read -r v0 v1 <<< "$(grep "^Phase liquid volume" "$sub/log.vheFoam" | awk 'NR==1{a=$4} {b=$4} END{print a, b}')"
+read -r lo hi <<< "$(alphaRange "$sub/log.vheFoam")"
+check subCycles "abs($v1/$v0 - 1) < 1e-6 and $lo > -1e-6 and $hi < 1 + 1e-6" \
+    "nAlphaSubCycles 2: liquid volume $v0 -> $v1, alpha in [$lo, $hi]"
 
 hl="$ser/postProcessing/liquidLevel/0/liquidLevel.dat"
 h0=$(awk '!/^#/{print $2; exit}' "$hl")
