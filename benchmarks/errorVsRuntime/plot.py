@@ -1,0 +1,65 @@
+#!/usr/bin/env python3
+"""Observed orders and the error-against-run-time plot of the study.
+
+Usage: plot.py results.csv
+Writes orders.txt and errorVsRuntime.png (gnuplot): L2 error of u (and of
+B_xy) against wall-clock seconds, one line per case and variant.
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+from collections import defaultdict
+
+
+def main(path):
+    rows = list(csv.DictReader(open(path)))
+    series = defaultdict(list)
+    for r in rows:
+        series[(r["case"], r["variant"])].append(r)
+
+    lines = []
+    for (case, variant), rs in sorted(series.items()):
+        key = "dt" if case == "timeStep" else "cells"
+        rs.sort(key=lambda r: float(r[key]), reverse=(key == "dt"))
+        lines.append(f"{case} {variant} (refining {key}):")
+        prev = None
+        for r in rs:
+            e_u, e_b = float(r["L2_u"]), float(r["L2_Bxy"])
+            h = float(r["dt"]) if key == "dt" else 1.0 / float(r["cells"])
+            order = ""
+            if prev and all(math.isfinite(x) and x > 0
+                            for x in (e_u, e_b, prev[1], prev[2])):
+                ratio = math.log(prev[0] / h)
+                order = (f"  order u {math.log(prev[1] / e_u) / ratio:.2f}"
+                         f", B_xy {math.log(prev[2] / e_b) / ratio:.2f}")
+            lines.append(f"  {key} {r[key]:>6}  L2(u) {e_u:.3e}  "
+                         f"L2(Bxy) {e_b:.3e}  {r['seconds']} s{order}")
+            prev = (h, e_u, e_b)
+    open("orders.txt", "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+    plots = []
+    os.makedirs("plotdata", exist_ok=True)
+    for (case, variant), rs in sorted(series.items()):
+        name = f"plotdata/{case}_{variant}.dat"
+        with open(name, "w") as f:
+            for r in rs:
+                if math.isfinite(float(r["L2_u"])):
+                    f.write(f"{r['seconds']} {r['L2_u']} {r['L2_Bxy']}\n")
+        plots.append(f"'{name}' u 1:2 w lp lw 2 t '{case} {variant}: u'")
+        plots.append(f"'{name}' u 1:3 w lp dt 2 t '{case} {variant}: B_xy'")
+    gp = f"""set terminal pngcairo size 1000,700 font ",11"
+set output 'errorVsRuntime.png'
+set logscale xy; set grid
+set xlabel 'wall-clock time [s]'; set ylabel 'RMS over a period of the L2 error'
+set title 'Oscillating Couette flow over an elastic layer: error against run time'
+set key outside right
+plot {", ".join(plots)}
+"""
+    subprocess.run(["gnuplot"], input=gp, text=True, check=True)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
