@@ -1,0 +1,26 @@
+#!/bin/bash
+# Restart: a run stopped at a written time and restarted from it ends where
+# the continuous run ends (disks in the channel, semi-implicit elasticity,
+# B*, alpha and U compared at the end; bound 1e-6 of the field scale, the
+# files hold 8 digits).
+. "$(dirname "$0")/lib.sh"
+
+cont="$WORK/continuous" rest="$WORK/restarted"
+channelCase "$cont" cells=32 nDisks=6 G=0.5 endTime=0.6 writeInterval=0.3 \
+    || { fail setup blockMesh; finish; }
+sed -i 's/relTol          0.01;/relTol 0;/' "$cont/system/fvSolution"
+run "$cont" setBodies || { fail setup setBodies; finish; }
+cp -r "$cont" "$rest"
+run "$cont" vheFoam || fail continuousRun "$cont/log.vheFoam"
+
+# stop at the first written time, then restart from it (startFrom latestTime)
+foamDictionary -entry endTime -set 0.3 "$rest/system/parameters" > /dev/null
+run "$rest" vheFoam || fail firstPart "$rest/log.vheFoam"
+foamDictionary -entry endTime -set 0.6 "$rest/system/parameters" > /dev/null
+run "$rest" vheFoam || fail secondPart "$rest/log.vheFoam"
+
+for f in U Bstar alpha.rubber; do
+    read -r d m <<< "$(maxFieldDiff "$cont" "$rest" 0.6 "$f")"
+    check "restart_$f" "$d <= 1e-6*$m" "max |$f continuous - restarted| = $d at t = 0.6 (scale $m)"
+done
+finish
