@@ -381,7 +381,16 @@ int main(int argc, char *argv[])
     const label nCells = mesh.nCells();
     List<scalarField> solid(solidNames.size(), scalarField(nCells, 0));
     scalarField phis(nCells, 0);
-    const pointField& pts = mesh.points();
+    // Cell bounding boxes, once for all bodies and images
+    List<boundBox> cellBox(nCells);
+    {
+        const pointField& pts = mesh.points();
+        const labelListList& cellPts = mesh.cellPoints();
+        forAll(cellBox, c)
+        {
+            cellBox[c] = boundBox(pts, cellPts[c], false);
+        }
+    }
 
     for (const body& b : bodies)
     {
@@ -409,7 +418,7 @@ int main(int argc, char *argv[])
             vhe_shape_bounds(&s, slo, shi);
             for (label c = 0; c < nCells; ++c)
             {
-                const boundBox cb(pts, mesh.cellPoints()[c], false);
+                const boundBox& cb = cellBox[c];
                 double clo[3], chi[3];
                 setVec(clo, cb.min());
                 setVec(chi, cb.max());

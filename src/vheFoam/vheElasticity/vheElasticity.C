@@ -239,6 +239,7 @@ Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::sigma() const
 Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::momentumSource
 (
     const volVectorField& U,
+    const volTensorField& gradU,
     scalar deltaT
 ) const
 {
@@ -257,7 +258,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::momentumSource
            *mixture_.Ghat()*mixture_.phis()
         );
         S += fvm::laplacian(kElastic, U, "laplacian(kElastic,U)");
-        S += fvc::div(kElastic*dev2(T(fvc::grad(U))), "div(sigma)");
+        S += fvc::div(kElastic*dev2(T(gradU)), "div(sigma)");
     }
     return tS;
 }
