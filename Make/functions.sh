@@ -4,7 +4,7 @@
 VHE_BUILD_PACKAGES="openfoam libopenfoam openmpi-bin libopenmpi-dev gcc g++ make
  pkg-config check dpkg-dev xz-utils bzip2 gmsh gnuplot-nox"
 VHE_TEST_PACKAGES="python3"
-VHE_RUN_PACKAGES="gmsh gnuplot-nox python3"
+VHE_RUN_PACKAGES="gmsh gnuplot-nox python3 bsdextrautils bc"
 VHE_IMAGE_PACKAGES="paraview python3-paraview xvfb xauth"
 
 # vhe_need_packages PKG...: install the missing ones (as root) or print the
