@@ -4,7 +4,6 @@
 . "$(dirname "${BASH_SOURCE[0]}")/../../Make/bashrc"
 
 TESTS_DIR="$VHE_ROOT/tests/cases"
-CHANNEL="$VHE_ROOT/tutorials/periodicChannel"
 WORK="$VHE_ROOT/build/tests/$(basename "$0" .sh)"
 rm -rf "$WORK"
 mkdir -p "$WORK"
@@ -23,13 +22,13 @@ check() {
     fi
 }
 
-# channelCase DIR KEY=VALUE...: a periodic channel case from the tutorial
-# template with the given parameters changed
-channelCase() {
-    local dir=$1; shift
+# sceneCase SCENE DIR KEY=VALUE...: a case from tutorials/SCENE/template
+# with the given entries of its parameters changed, meshed with blockMesh
+sceneCase() {
+    local scene="$VHE_ROOT/tutorials/$1" dir=$2; shift 2
     rm -rf "$dir"
-    cp -r "$CHANNEL/template" "$dir"
-    cp "$CHANNEL/parameters" "$dir/system/parameters"
+    cp -r "$scene/template" "$dir"
+    cp "$scene/parameters" "$dir/system/parameters"
     local kv
     for kv in "$@"; do
         foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" \
@@ -37,6 +36,9 @@ channelCase() {
     done
     (cd "$dir" && blockMesh > log.blockMesh 2>&1) || return 1
 }
+
+# channelCase DIR KEY=VALUE...: the periodic channel (scene A)
+channelCase() { sceneCase periodicChannel "$@"; }
 
 # run DIR APP ARGS...: run in DIR, log to DIR/log.APP, return its status
 run() {

@@ -10,19 +10,14 @@
 #    3e-8, the 8-digit write precision), liquid level to 1e-5 relative.
 . "$(dirname "$0")/lib.sh"
 
-SCENE="$VHE_ROOT/tutorials/damBreakSpheres"
 ser="$WORK/serial" par="$WORK/parallel"
-rm -rf "$ser"
-cp -r "$SCENE/template" "$ser"
-cp "$SCENE/parameters" "$ser/system/parameters"
-for kv in n1=21 n2=10 n3=10 endTime=0.3 writeInterval=0.3 GperRho=10; do
-    foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" "$ser/system/parameters" > /dev/null
-done
+sceneCase damBreakSpheres "$ser" n1=21 n2=10 n3=10 endTime=0.3 writeInterval=0.3 \
+    GperRho=10 || { fail setup "$ser"; finish; }
 # tight pressure and velocity solves, so that serial and parallel differ by
 # round-off rather than by the solvers' relTol
 sed -i 's/relTol          0.05;/relTol 0;/; s/tolerance       1e-7;/tolerance 1e-11;/' \
     "$ser/system/fvSolution"
-run "$ser" blockMesh && run "$ser" setFields && run "$ser" setBodies \
+run "$ser" setFields && run "$ser" setBodies \
     || { fail setup "$ser"; finish; }
 cp -r "$ser" "$par"
 cp -r "$ser" "$WORK/subCycled"

@@ -8,16 +8,12 @@
 # precision.  Bounds: 1e-7 and 1e-6 relative.
 . "$(dirname "$0")/lib.sh"
 
-SCENE="$VHE_ROOT/tutorials/damBreakSpheres"
 vhe="$WORK/vheFoam" inter="$WORK/interFoam"
-cp -r "$SCENE/template" "$vhe"
-cp "$SCENE/parameters" "$vhe/system/parameters"
-for kv in n1=21 n2=10 n3=10 endTime=0.5 writeInterval=0.5 nSpheres=0; do
-    foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" "$vhe/system/parameters" > /dev/null
-done
+sceneCase damBreakSpheres "$vhe" n1=21 n2=10 n3=10 endTime=0.5 writeInterval=0.5 \
+    nSpheres=0 || { fail setup "$vhe"; finish; }
 sed -i 's/relTol          0.05;/relTol 0;/; s/tolerance       1e-7;/tolerance 1e-10;/' \
     "$vhe/system/fvSolution"
-run "$vhe" blockMesh && run "$vhe" setFields || { fail setup "$vhe"; finish; }
+run "$vhe" setFields || { fail setup "$vhe"; finish; }
 
 # The same case for interFoam: its phase names, dictionaries and entries
 cp -r "$vhe" "$inter"
