@@ -119,7 +119,7 @@ void Foam::vheMixture::readAlphas()
             const word phaseName(fw.substr(6));
             bool known = false;
             for (const phase& p : phases_) known = known || p.name == phaseName;
-            if (!known && phaseName != "phis")
+            if (!known)
             {
                 FatalIOErrorInFunction(*this)
                     << "Field file " << timeDir/fw
