@@ -1,7 +1,7 @@
 # Shared by the case tests (sourced).  A test prints one line per check,
 # "PASS <name>: <figures>" or "FAIL <name>: <why>", which ./Alltest counts.
 # shellcheck disable=SC1091
-. "$(dirname "${BASH_SOURCE[0]}")/../../Make/bashrc"
+. "$(dirname "${BASH_SOURCE[0]}")/../../tutorials/common/functions.sh"
 
 TESTS_DIR="$VHE_ROOT/tests/cases"
 WORK="$VHE_ROOT/build/tests/$(basename "$0" .sh)"
@@ -22,20 +22,9 @@ check() {
     fi
 }
 
-# sceneCase SCENE DIR KEY=VALUE...: a case from tutorials/SCENE/template
-# with the given entries of its parameters changed, meshed with blockMesh
-sceneCase() {
-    local scene="$VHE_ROOT/tutorials/$1" dir=$2; shift 2
-    rm -rf "$dir"
-    cp -r "$scene/template" "$dir"
-    cp "$scene/parameters" "$dir/system/parameters"
-    local kv
-    for kv in "$@"; do
-        foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" \
-            "$dir/system/parameters" > /dev/null || return 1
-    done
-    (cd "$dir" && blockMesh > log.blockMesh 2>&1) || return 1
-}
+# sceneCase SCENE DIR KEY=VALUE...: a case from tutorials/SCENE (its
+# template with the given parameters changed), meshed with blockMesh
+sceneCase() { vhe_scene_case "$VHE_ROOT/tutorials/$1" "${@:2}"; }
 
 # channelCase DIR KEY=VALUE...: the periodic channel (scene A)
 channelCase() { sceneCase periodicChannel "$@"; }

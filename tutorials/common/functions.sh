@@ -11,6 +11,23 @@ vhe_build_if_missing()
     "$VHE_ROOT/Allwmake"
 }
 
+# vhe_scene_case SCENE DIR KEY=VALUE...: case DIR from SCENE's template/
+# and parameters (SCENE: a tutorial directory), with the given entries of
+# its system/parameters changed, meshed with blockMesh
+vhe_scene_case()
+{
+    local scene=$1 dir=$2 kv; shift 2
+    rm -rf "$dir"
+    mkdir -p "$(dirname "$dir")"
+    cp -r "$scene/template" "$dir"
+    cp "$scene/parameters" "$dir/system/parameters"
+    for kv in "$@"; do
+        foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" \
+            "$dir/system/parameters" > /dev/null || return 1
+    done
+    vhe_run "$dir" blockMesh
+}
+
 # vhe_run CASE APP [ARGS]: run APP in CASE, log to CASE/log.APP; stop on error
 vhe_run()
 {

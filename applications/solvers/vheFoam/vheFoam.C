@@ -19,6 +19,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "clockTime.H"
+#include "profiling.H"
 #include "vheMixture.H"
 #include "vheElasticity.H"
 
@@ -79,6 +80,7 @@ int main(int argc, char *argv[])
 
         runTime.write();
 
+        runTime.printExecutionTime(Info);
         #include "progress.H"
     }
 

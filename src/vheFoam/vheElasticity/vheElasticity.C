@@ -6,7 +6,6 @@
 #include "fvm.H"
 #include "fvc.H"
 #include "zeroGradientFvPatchFields.H"
-#include "fvMatrices.H"
 #include "polyPatch.H"
 #include "vhe.h"
 
@@ -236,31 +235,20 @@ Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::sigma() const
 }
 
 
-Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::momentumSource
+Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
 (
-    const volVectorField& U,
-    const volTensorField& gradU,
     scalar deltaT
 ) const
 {
-    tmp<fvVectorMatrix> tS(new fvVectorMatrix(U, dimForce));
-    fvVectorMatrix& S = tS.ref();
-    S += divSigma();
-
-    if (semiImplicit_)
-    {
-        // Stress increment of the step, linearised about B = I:
-        // dt Ghat phi_s (grad U + grad U^T), the first part implicit
-        const volScalarField kElastic
+    return tmp<volScalarField>
+    (
+        new volScalarField
         (
-            "kElastic",
+            "muElastic",
             dimensionedScalar("deltaT", dimTime, deltaT)
            *mixture_.Ghat()*mixture_.phis()
-        );
-        S += fvm::laplacian(kElastic, U, "laplacian(kElastic,U)");
-        S += fvc::div(kElastic*dev2(T(gradU)), "div(sigma)");
-    }
-    return tS;
+        )
+    );
 }
 
 

@@ -183,19 +183,37 @@ void Foam::vheMixture::checkAlphas() const
 }
 
 
-Foam::tmp<Foam::surfaceScalarField> Foam::vheMixture::nHatf
-(
-    const volScalarField& alpha1,
-    const volScalarField& alpha2
-) const
+Foam::PtrList<Foam::surfaceScalarField> Foam::vheMixture::nHatfs() const
 {
-    // Interface normal between two phases, as multiphaseMixture
-    surfaceVectorField gradAlphaf
-    (
-        fvc::interpolate(alpha2)*fvc::interpolate(fvc::grad(alpha1))
-      - fvc::interpolate(alpha1)*fvc::interpolate(fvc::grad(alpha2))
-    );
-    return (gradAlphaf/(mag(gradAlphaf) + deltaN_)) & mesh_.Sf();
+    // Interface normal flux between every pair of phases i < j, as
+    // multiphaseMixture, from each phase's face value and face gradient
+    // computed once (not once per pair)
+    const label n = alphas_.size();
+    PtrList<surfaceScalarField> alphaf(n);
+    PtrList<surfaceVectorField> gradAlphaf(n);
+    forAll(alphas_, i)
+    {
+        alphaf.set(i, fvc::interpolate(alphas_[i]));
+        gradAlphaf.set(i, fvc::interpolate(fvc::grad(alphas_[i])));
+    }
+
+    PtrList<surfaceScalarField> nHat(n*(n - 1)/2);
+    for (label i = 0, k = 0; i < n; ++i)
+    {
+        for (label j = i + 1; j < n; ++j, ++k)
+        {
+            const surfaceVectorField gradAlphaij
+            (
+                alphaf[j]*gradAlphaf[i] - alphaf[i]*gradAlphaf[j]
+            );
+            nHat.set
+            (
+                k,
+                (gradAlphaij/(mag(gradAlphaij) + deltaN_)) & mesh_.Sf()
+            );
+        }
+    }
+    return nHat;
 }
 
 
@@ -212,6 +230,7 @@ void Foam::vheMixture::solveAlphaStep
     surfaceScalarField phic(mag(phi_/mesh_.magSf()));
     phic = min(cAlpha*phic, max(phic));
 
+    const PtrList<surfaceScalarField> nHatij(nHatfs());
     PtrList<surfaceScalarField> alphaPhis(alphas_.size());
     forAll(alphas_, i)
     {
@@ -230,7 +249,9 @@ void Foam::vheMixture::solveAlphaStep
         forAll(alphas_, j)
         {
             if (j == i) continue;
-            surfaceScalarField phir(phic*nHatf(alpha, alphas_[j]));
+            // nHat_ji = -nHat_ij, exactly in floating point
+            const surfaceScalarField& nHat = nHatij[pairIndex(i, j)];
+            surfaceScalarField phir(i < j ? phic*nHat : -phic*nHat);
             alphaPhi += fvc::flux
             (
                 -fvc::flux(-phir, alphas_[j], alpharScheme),
