@@ -8,6 +8,7 @@ meshes (linear interpolation in time) and the observed order.
 """
 import math
 import os
+import subprocess
 import sys
 
 
@@ -52,6 +53,21 @@ def main(cases):
                            for t in times) / len(times))
         print(f"{case}: RMS of h21 - h42 {d1:.4f}, h42 - h84 {d2:.4f},"
               f" observed order {math.log(d1 / d2) / math.log(2):.2f}")
+        plot(case, runs)
+
+
+def plot(case, runs):
+    """h_L(t) on the three meshes: hL_<case>.png beside this script"""
+    curves = ", ".join(f"'{r}' u 1:2 w l lw 2 t '{n} x {n * 20 // 42} x "
+                       f"{n * 20 // 42}'" for r, n in zip(runs, (21, 42, 84)))
+    subprocess.run(["gnuplot"], check=True, text=True, input=f"""
+set terminal pngcairo size 900,500 font ",11"
+set output 'hL_{case}.png'
+set grid; set key top right
+set xlabel 't [s]'; set ylabel 'h_L at x1 = 0 [m]'
+set title 'Scene B ({case}): liquid level at the left wall on three meshes'
+plot {curves}
+""")
 
 
 if __name__ == "__main__":
