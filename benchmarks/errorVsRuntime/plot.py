@@ -54,7 +54,7 @@ def main(path):
 set output 'errorVsRuntime.png'
 set logscale xy; set grid
 set xlabel 'wall-clock time [s]'; set ylabel 'RMS over a period of the L2 error'
-set title 'Oscillating Couette flow over an elastic layer: error against run time'
+set title 'Oscillating Couette flow through fluid and elastic layers: error against run time'
 set key outside right
 plot {", ".join(plots)}
 """
