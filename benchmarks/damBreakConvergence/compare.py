@@ -2,7 +2,7 @@
 """Self-convergence of the dam-break liquid level h_L(t) (scene B).
 
 Usage: compare.py CASES_DIR
-CASES_DIR holds <case>_<n1> runs (n1 = 21, 42, 84 cells along x1); prints,
+CASES_DIR holds <case>_<n1> runs (n1 = 24, 48, 96 cells along x1); prints,
 per case, the RMS over 0 < t <= 5 of h_L differences between successive
 meshes (linear interpolation in time) and the observed order.
 """
@@ -10,6 +10,9 @@ import math
 import os
 import subprocess
 import sys
+
+
+MESHES = (24, 48, 96)      # cells along x1; x2 and x3: 10/24 of that
 
 
 def load(path):
@@ -43,7 +46,7 @@ def main(cases):
     for case in ("none", "G10", "G0.1"):
         runs = [os.path.join(cases, f"{case}_{n}", "postProcessing",
                              "liquidLevel", "0", "liquidLevel.dat")
-                for n in (21, 42, 84)]
+                for n in MESHES]
         if not all(os.path.exists(r) for r in runs):
             continue
         c, m, f = (load(r) for r in runs)
@@ -51,15 +54,16 @@ def main(cases):
                            for t in times) / len(times))
         d2 = math.sqrt(sum((interp(m, t) - interp(f, t)) ** 2
                            for t in times) / len(times))
-        print(f"{case}: RMS of h21 - h42 {d1:.4f}, h42 - h84 {d2:.4f},"
+        print(f"{case}: RMS of h{MESHES[0]} - h{MESHES[1]} {d1:.4f}, "
+              f"h{MESHES[1]} - h{MESHES[2]} {d2:.4f},"
               f" observed order {math.log(d1 / d2) / math.log(2):.2f}")
         plot(case, runs)
 
 
 def plot(case, runs):
     """h_L(t) on the three meshes: hL_<case>.png beside this script"""
-    curves = ", ".join(f"'{r}' u 1:2 w l lw 2 t '{n} x {n * 20 // 42} x "
-                       f"{n * 20 // 42}'" for r, n in zip(runs, (21, 42, 84)))
+    curves = ", ".join(f"'{r}' u 1:2 w l lw 2 t '{n} x {n * 10 // 24} x "
+                       f"{n * 10 // 24}'" for r, n in zip(runs, MESHES))
     subprocess.run(["gnuplot"], check=True, text=True, input=f"""
 set terminal pngcairo size 900,500 font ",11"
 set output 'hL_{case}.png'

@@ -96,6 +96,8 @@ expectFatal noPressureReference "$d" vheFoam "Unable to set reference cell" fvSo
 
 d=$(variant unknownElasticity); sed -i 's/^    pRefValue .*/&\n    elasticity implicitish;/' "$d/system/fvSolution"
 expectFatal unknownElasticity "$d" vheFoam "Unknown elasticity 'implicitish'" fvSolution
+d=$(variant negativeStabilisation); sed -i 's/^    pRefValue .*/&\n    elasticStabilisation -1;/' "$d/system/fvSolution"
+expectFatal negativeStabilisation "$d" vheFoam "elasticStabilisation must be >= 0" fvSolution
 
 # ---- setBodies: system/setBodiesDict
 B=system/setBodiesDict

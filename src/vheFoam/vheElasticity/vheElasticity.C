@@ -5,6 +5,7 @@
 #include "vheElasticity.H"
 #include "fvm.H"
 #include "fvc.H"
+#include "fvMatrices.H"
 #include "zeroGradientFvPatchFields.H"
 #include "polyPatch.H"
 #include "vhe.h"
@@ -66,7 +67,8 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
     sumMagSfByV_
     (
         fvc::surfaceSum(mesh_.magSf())().primitiveField()/mesh_.V()
-    )
+    ),
+    stabilisation_(0)
 {
     const dictionary& pimple = mesh_.solutionDict().subDict("PIMPLE");
     const word variant
@@ -80,6 +82,14 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
             << "    Valid: (semiImplicit explicit)" << exit(FatalIOError);
     }
     semiImplicit_ = variant == "semiImplicit";
+    stabilisation_ =
+        pimple.getOrDefault<scalar>("elasticStabilisation", stabilisation_);
+    if (stabilisation_ < 0)
+    {
+        FatalIOErrorInFunction(pimple)
+            << "elasticStabilisation must be >= 0, got " << stabilisation_
+            << exit(FatalIOError);
+    }
     Info<< "Elastic stress: " << variant << endl;
 
     if (Bstar_.headerOk())
@@ -189,12 +199,182 @@ void Foam::vheElasticity::advect(scalar deltaT)
 
 void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
 {
-    const volTensorField gradU(fvc::grad(U));
+    const volTensorField gradU(velocityGradient(U, deltaT, true));
     vhe_stretch
     (
         mesh_.nCells(), deltaT, flat(gradU.primitiveField()),
         flat(Bstar_.primitiveFieldRef())
     );
+}
+
+
+Foam::tmp<Foam::volTensorField> Foam::vheElasticity::velocityGradient
+(
+    const volVectorField& U,
+    scalar deltaT,
+    bool bulk
+) const
+{
+    if (stabilisation_ <= 0)
+    {
+        return fvc::grad(U);
+    }
+    return
+        fvc::grad(U)
+      + fvc::surfaceIntegrate(mesh_.Sf()*faceVelocityCorrection(U, deltaT, bulk));
+}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::vheElasticity::bulkWeight() const
+{
+    // phi_s,P phi_s,N: 1 between solid cells, 0 at a sharp interface and
+    // at non-coupled boundaries
+    const volScalarField& phis = mixture_.phis();
+    tmp<surfaceScalarField> tw
+    (
+        new surfaceScalarField
+        (
+            IOobject("bulkWeight", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedScalar(dimless, Zero)
+        )
+    );
+    surfaceScalarField& w = tw.ref();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    forAll(own, facei)
+    {
+        w[facei] = phis[own[facei]]*phis[nei[facei]];
+    }
+    forAll(w.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& pp = phis.boundaryField()[patchi];
+        if (pp.coupled())
+        {
+            w.boundaryFieldRef()[patchi] =
+                pp.patchInternalField()*pp.patchNeighbourField();
+        }
+    }
+    return tw;
+}
+
+
+Foam::tmp<Foam::surfaceVectorField>
+Foam::vheElasticity::faceVelocityCorrection
+(
+    const volVectorField& U,
+    scalar deltaT,
+    bool bulk
+) const
+{
+    const volScalarField muEff(this->muEff(deltaT));
+    // Correction to the linear face velocity of the stretch's gradient:
+    // - between solid cells, the compact-minus-wide difference of the
+    //   elastic traction over twice the impedance (Rhie-Chow's device for
+    //   the (u, sigma) wave system): O(dx^3) on smooth fields, it damps the
+    //   odd-even mode of B* that the face stress cannot see;
+    // - at an interface (phi_s jumping), the face velocity that makes the
+    //   traction continuous, as the face stress of divSigma does.
+    const volSymmTensorField sig(sigma());
+    const surfaceSymmTensorField sigf(faceStress(sig, muEff));
+    const volVectorField divSig(fvc::surfaceIntegrate(mesh_.Sf() & sigf));
+    const surfaceVectorField nf(mesh_.Sf()/mesh_.magSf());
+    const surfaceScalarField w(bulkWeight());
+    const volScalarField Z(impedance());
+    const surfaceScalarField Zf(fvc::interpolate(Z));
+
+    surfaceVectorField du
+    (
+        "du",
+        (bulk ? stabilisation_ : 0)*w
+       /(2*Zf + dimensionedScalar("small", Zf.dimensions(), ROOTVSMALL))
+       *((fvc::snGrad(sig) & nf) - fvc::interpolate(divSig))
+       /mesh_.deltaCoeffs()
+    );
+
+    const volScalarField& phis = mixture_.phis();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& lw = mesh_.weights();
+    const scalarField& dc = mesh_.deltaCoeffs();
+    forAll(own, facei)
+    {
+        const label P = own[facei], N = nei[facei];
+        const scalar jump = mag(phis[P] - phis[N]);
+        if (jump < SMALL) continue;
+        const scalar mP = muEff[P] + ROOTVSMALL, mN = muEff[N] + ROOTVSMALL;
+        const vector uLin = lw[facei]*U[P] + (1 - lw[facei])*U[N];
+        const vector uCons =
+        (
+            mP*U[P] + mN*U[N] + 0.5/dc[facei]*((sig[N] - sig[P]) & nf[facei])
+        )/(mP + mN);
+        du[facei] += jump*(uCons - uLin);
+    }
+    return tmp<surfaceVectorField>(new surfaceVectorField(du));
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::vheElasticity::impedance() const
+{
+    return sqrt
+    (
+        max(mixture_.rho(), dimensionedScalar(dimDensity, Zero))
+       *mixture_.Ghat()*mixture_.phis()
+    );
+}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::vheElasticity::faceViscosity
+(
+    const volScalarField& muEff
+) const
+{
+    const dimensionedScalar small("small", muEff.dimensions(), ROOTVSMALL);
+    return 1/fvc::interpolate(1/(muEff + small));
+}
+
+
+Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
+(
+    const volSymmTensorField& sig,
+    const volScalarField& muEff
+) const
+{
+    if (stabilisation_ <= 0)
+    {
+        return fvc::interpolate(sig);
+    }
+    // Each side's stress weighted by the other side's viscosity: the
+    // traction that is continuous across a face between a solid and a
+    // fluid cell (the linear interpolation where the viscosities are equal)
+    const volScalarField m
+    (
+        muEff + dimensionedScalar("small", muEff.dimensions(), ROOTVSMALL)
+    );
+    return fvc::interpolate(sig/m)/fvc::interpolate(1/m);
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::stabilisation
+(
+    const volVectorField& U,
+    scalar deltaT
+) const
+{
+    const volTensorField gradU(velocityGradient(U, deltaT, false));
+    // Compact minus wide Laplacian of U with the viscosity
+    // stabilisation x impedance x cell size, between solid cells only:
+    // O(dx^3) on smooth fields, it damps the odd-even mode of U that the
+    // wide elastic operator (grad U, then the linear face stress) cannot see
+    const surfaceScalarField muSf
+    (
+        "muStabilisation",
+        stabilisation_*bulkWeight()*fvc::interpolate(impedance())
+       /mesh_.deltaCoeffs()
+    );
+    return
+        fvm::laplacian(muSf, U, "laplacian(muStabilisation,U)")
+      - fvc::div(muSf*(mesh_.Sf() & fvc::interpolate(gradU)));
 }
 
 
@@ -252,9 +432,29 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
 }
 
 
-Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma() const
+Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muEff
+(
+    scalar deltaT
+) const
 {
-    return fvc::div(sigma(), "div(sigma)");
+    if (semiImplicit_)
+    {
+        return mixture_.mu() + muElastic(deltaT);
+    }
+    return tmp<volScalarField>(new volScalarField("muEff", mixture_.mu()));
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma
+(
+    const volScalarField& muEff
+) const
+{
+    if (stabilisation_ <= 0)
+    {
+        return fvc::div(sigma(), "div(sigma)");
+    }
+    return fvc::surfaceIntegrate(mesh_.Sf() & faceStress(sigma(), muEff));
 }
 
 
