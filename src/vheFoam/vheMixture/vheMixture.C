@@ -5,6 +5,7 @@
 #include "vheMixture.H"
 #include "fvc.H"
 #include "MULES.H"
+#include "IOmanip.H"
 #include "upwind.H"
 #include "wordRes.H"
 #include "OSspecific.H"
@@ -630,8 +631,10 @@ void Foam::vheMixture::report() const
     forAll(alphas_, i)
     {
         const volScalarField& a = alphas_[i];
+        // Volumes to 15 digits: conservation is checked to 1e-6 and below
         Info<< "Phase " << phases_[i].name
-            << " volume " << phaseVolume(i)
+            << " volume " << setprecision(15) << phaseVolume(i)
+            << setprecision(IOstream::defaultPrecision())
             << "  fraction min, max = " << gMin(a.primitiveField())
             << ' ' << gMax(a.primitiveField()) << nl;
     }
