@@ -202,20 +202,12 @@ void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
     // The flow is incompressible, but the cell gradient of U (interpolated
     // from cell values) is not exactly traceless, least of all where the
     // velocity changes fast (a heavy body hitting a wall): stretch with its
-    // traceless part over the solved directions, so that det(F) = 1 and
-    // det B stays 1
+    // deviatoric part, so that det(F) = 1 and det B stays 1.  (dev, not the
+    // trace over the solved directions only: the stress increment that the
+    // semi-implicit momentum equation takes, Ghat phi_s dt (L + L^T -
+    // 2/3 tr(L) I), is then exactly the increment of the stretched B*.)
     volTensorField gradU(velocityGradient(U, deltaT, true));
-    {
-        const Vector<label>& solved = mesh_.solutionD();
-        tensor ID(Zero);
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            if (solved[d] > 0) ID(d, d) = 1;
-        }
-        ID /= mesh_.nSolutionD();
-        tensorField& L = gradU.primitiveFieldRef();
-        L -= tr(L)*ID;
-    }
+    gradU.primitiveFieldRef() = dev(gradU.primitiveField());
     vhe_stretch
     (
         mesh_.nCells(), deltaT, flat(gradU.primitiveField()),
