@@ -6,7 +6,11 @@ For every run in CASES_DIR: did it end (no NaN, no fatal error), the worst
 excursion of any phase fraction outside [0, 1], the largest relative drift
 of any phase volume (vheFoam's "Phase <name> volume" lines, every step),
 the smallest eigenvalue of B* and the largest |det B - 1| and |dev B| of
-solid cells (solidDiagnostics).  Prints a table and one "PASS name: ..." or
+solid cells, and, in closed undriven boxes, the largest growth of the total
+energy (kinetic + elastic + potential) between writes and the largest gain
+of the balance (total + viscous dissipation; information only: the
+potential and dissipation integrals are not the scheme's own discrete
+ones) (solidDiagnostics).  Prints a table and one "PASS name: ..." or
 "FAIL name: ..." line per run, and writes CSV.
 """
 import csv
@@ -20,6 +24,10 @@ ALPHA_TOL = 1e-6      # every alpha in [-tol, 1 + tol]
 VOLUME_TOL = 1e-6     # relative drift of every phase volume
 EIG_TOL = -1e-9       # B* positive semi-definite
 DET_TOL = 0.05        # |det B - 1| in solid cells (phi_s > 0.5)
+ENERGY_TOL = 1e-6     # growth of total energy between writes, relative to
+                      # the largest kinetic + elastic energy (closed,
+                      # undriven boxes only: a file "closedUndriven" in the
+                      # case)
 
 PHASE = re.compile(r"^Phase (\S+) volume (\S+)\s+fraction min, max = (\S+) (\S+)",
                    re.M)
@@ -37,6 +45,7 @@ def evaluate(case):
     drift = max((max(abs(x / vs[0] - 1) for x in vs)
                  for vs in volumes.values() if vs[0] > 0), default=0.0)
     minEig, detDrift, devB = math.inf, 0.0, 0.0
+    total, balance, scale = [], [], 0.0
     diag = os.path.join(case, "postProcessing", "solidDiagnostics", "0",
                         "solidDiagnostics.dat")
     if os.path.exists(diag):
@@ -46,6 +55,14 @@ def evaluate(case):
             c = [float(x) for x in line.split()]
             devB, minEig, detDrift = max(devB, c[2]), min(minEig, c[3]), \
                 max(detDrift, c[4])
+            scale = max(scale, c[5] + c[6])
+            total.append(c[8])
+            balance.append(c[10])
+    closed = os.path.exists(os.path.join(case, "closedUndriven"))
+    growth = gain = ""
+    if closed and scale > 0 and len(total) > 1:
+        growth = max(0.0, max(b - a for a, b in zip(total, total[1:]))) / scale
+        gain = max(0.0, max(b - balance[0] for b in balance)) / scale
     seconds = open(os.path.join(case, "time")).read().strip() \
         if os.path.exists(os.path.join(case, "time")) else ""
     failed = []
@@ -59,10 +76,14 @@ def evaluate(case):
         failed.append(f"B* eigenvalue {minEig:.2e}")
     if detDrift > DET_TOL:
         failed.append(f"det(B) drift {detDrift:.2e}")
+    if growth != "" and growth > ENERGY_TOL:
+        failed.append(f"energy grew by {growth:.2e}")
     return dict(case=os.path.basename(case), steps=steps, seconds=seconds,
                 alphaExcursion=f"{alphaWorst:.2e}", volumeDrift=f"{drift:.2e}",
                 minEigBstar=f"{minEig:.2e}" if math.isfinite(minEig) else "",
                 maxDetDrift=f"{detDrift:.2e}", maxDevB=f"{devB:.3g}",
+                energyGrowth=f"{growth:.1e}" if growth != "" else "",
+                balanceGain=f"{gain:.1e}" if gain != "" else "",
                 verdict="PASS" if not failed else "FAIL",
                 why="; ".join(failed))
 
@@ -75,14 +96,17 @@ def main(cases, out):
         w.writeheader()
         w.writerows(rows)
     head = ("case", "steps", "seconds", "alphaExcursion", "volumeDrift",
-            "minEigBstar", "maxDetDrift", "maxDevB", "verdict")
+            "minEigBstar", "maxDetDrift", "maxDevB", "energyGrowth",
+            "balanceGain", "verdict")
     widths = [max(len(h), *(len(str(r[h])) for r in rows)) for h in head]
     print("  ".join(h.ljust(n) for h, n in zip(head, widths)))
     for r in rows:
         print("  ".join(str(r[h]).ljust(n) for h, n in zip(head, widths)))
     print(f"(criteria: ends without NaN; alpha in [0, 1] within {ALPHA_TOL:g}; "
           f"phase volumes within {VOLUME_TOL:g}; min eig B* >= {EIG_TOL:g}; "
-          f"|det B - 1| < {DET_TOL:g})")
+          f"|det B - 1| < {DET_TOL:g}; in closed undriven boxes total energy "
+          f"never growing by more than {ENERGY_TOL:g} of the largest kinetic "
+          f"+ elastic energy)")
     for r in rows:
         print(f"{r['verdict']} stability_{r['case']}: {r['steps']} steps, "
               f"alpha excursion {r['alphaExcursion']}, volume drift "

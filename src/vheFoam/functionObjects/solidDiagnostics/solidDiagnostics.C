@@ -6,6 +6,9 @@
 #include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
 #include "vhe.h"
+#include "fvc.H"
+#include "uniformDimensionedFields.H"
+#include "vheMixture.H"
 
 namespace Foam
 {
@@ -26,7 +29,8 @@ void Foam::functionObjects::solidDiagnostics::writeFileHeader(Ostream& os)
     (
         const char* col :
         {"solidVolume", "maxDevB", "minEigBstar", "maxDetDrift",
-         "kinetic", "elastic"}
+         "kinetic", "elastic", "potential", "total", "dissipated",
+         "balance"}
     )
     {
         writeTabbed(os, col);
@@ -44,7 +48,8 @@ Foam::functionObjects::solidDiagnostics::solidDiagnostics
 :
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
-    solidThreshold_(0.5)
+    solidThreshold_(0.5),
+    dissipated_(0)
 {
     read(dict);
     writeFileHeader(file());
@@ -68,6 +73,14 @@ bool Foam::functionObjects::solidDiagnostics::read(const dictionary& dict)
 
 bool Foam::functionObjects::solidDiagnostics::execute()
 {
+    // Every step: the viscous dissipation rate integral of 2 mu D:D at the
+    // end of the step, times the step
+    const volScalarField& mu = lookupObject<volScalarField>("mu");
+    const volVectorField& U = lookupObject<volVectorField>("U");
+    const volSymmTensorField D(symm(fvc::grad(U)));
+    dissipated_ += mesh_.time().deltaTValue()
+       *gSum(2*mu.primitiveField()*(D.primitiveField() && D.primitiveField())
+            *mesh_.V());
     return true;
 }
 
@@ -115,20 +128,37 @@ bool Foam::functionObjects::solidDiagnostics::write()
         reduce(diag[2], maxOp<scalar>());
     }
 
+    // Potential energy of gravity and the body force per unit mass
+    vector a(Zero);
+    if (time_.foundObject<uniformDimensionedVectorField>("g"))
+    {
+        a += time_.lookupObject<uniformDimensionedVectorField>("g").value();
+    }
+    if (foundObject<vheMixture>("vheProperties"))
+    {
+        a += lookupObject<vheMixture>("vheProperties").bodyForce().value();
+    }
+    const scalar potential =
+        -gSum(rho.primitiveField()*(mesh_.C().primitiveField() & a)*V);
+    const scalar total = kinetic + elastic + potential;
+
     Log << type() << ' ' << name() << " write:" << nl
         << "    solid volume " << solidVolume
         << ", max |dev B| " << diag[1]
         << ", min eig B* " << diag[0]
         << ", max |det B - 1| " << diag[2] << nl
-        << "    kinetic " << kinetic << " J, elastic " << elastic << " J"
-        << nl << endl;
+        << "    kinetic " << kinetic << " J, elastic " << elastic
+        << " J, potential " << potential << " J, dissipated " << dissipated_
+        << " J, balance " << total + dissipated_ << " J" << nl << endl;
 
     if (Pstream::master())
     {
         writeCurrentTime(file());
         file()
             << tab << solidVolume << tab << diag[1] << tab << diag[0]
-            << tab << diag[2] << tab << kinetic << tab << elastic << endl;
+            << tab << diag[2] << tab << kinetic << tab << elastic
+            << tab << potential << tab << total << tab << dissipated_
+            << tab << total + dissipated_ << endl;
     }
     return true;
 }
