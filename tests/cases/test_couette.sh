@@ -11,33 +11,37 @@
 # dt = 1e-3): measured u 2.22e-3, B_xy 1.85e-3.  Bounds: 1.2 x.
 . "$(dirname "$0")/lib.sh"
 
-d="$WORK/couette"
-cp -r "$VHE_ROOT/benchmarks/errorVsRuntime/couette" "$d"
-foamDictionary -entry N -set 40 "$d/system/parameters" > /dev/null
-run "$d" blockMesh && run "$d" setBodies && run "$d" vheFoam \
-    || { fail couetteRun "$d"; finish; }
-read -r eu eb <<< "$(tail -1 "$d/postProcessing/couetteError/0/couetteError.dat" | awk '{print $6, $8}')"
+# couette NAME KEY=VALUE... [include=FILE]: the study's Couette case with
+# the given parameters (then system/FILE's), run in $WORK/NAME; prints the
+# RMS over the error window of the L2 errors of u and B_xy
+couette() {
+    local d="$WORK/$1" kv include=""; shift
+    cp -r "$VHE_ROOT/benchmarks/errorVsRuntime/couette" "$d"
+    for kv in "$@"; do
+        case $kv in
+            include=*) include=${kv#include=} ;;
+            *) foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" "$d/system/parameters" > /dev/null ;;
+        esac
+    done
+    [ -z "$include" ] || echo "#include \"$include\"" >> "$d/system/parameters"
+    run "$d" blockMesh && run "$d" setBodies && run "$d" vheFoam || return 1
+    tail -1 "$d/postProcessing/couetteError/0/couetteError.dat" | awk '{print $6, $8}'
+}
+
+out=$(couette couette N=40) || { fail couetteRun "$WORK/couette"; finish; }
+read -r eu eb <<< "$out"
 check couetteVelocity "$eu < 1.2*7.26e-3" "RMS L2 error of u over a period: $eu (amplitude 1)"
 check couetteStrain "$eb < 1.2*1.50e-2" "RMS L2 error of B_xy in the solid: $eb"
 
-d="$WORK/threeLayers"
-cp -r "$VHE_ROOT/benchmarks/errorVsRuntime/couette" "$d"
-foamDictionary -entry N -set 30 "$d/system/parameters" > /dev/null
-foamDictionary -entry deltaT -set 4e-3 "$d/system/parameters" > /dev/null
-echo '#include "threeLayers"' >> "$d/system/parameters"
-run "$d" blockMesh && run "$d" setBodies && run "$d" vheFoam \
-    || { fail threeLayersRun "$d"; finish; }
-read -r eu eb <<< "$(tail -1 "$d/postProcessing/couetteError/0/couetteError.dat" | awk '{print $6, $8}')"
+out=$(couette threeLayers N=30 deltaT=4e-3 include=threeLayers) \
+    || { fail threeLayersRun "$WORK/threeLayers"; finish; }
+read -r eu eb <<< "$out"
 check threeLayersVelocity "$eu < 1.2*4.33e-3" "fluid/solid/fluid: RMS L2 error of u over a period: $eu (amplitude 0.4)"
 check threeLayersStrain "$eb < 1.2*7.61e-2" "fluid/solid/fluid: RMS L2 error of B_xy in the solid: $eb"
 
-d="$WORK/stabilised"
-cp -r "$VHE_ROOT/benchmarks/errorVsRuntime/couette" "$d"
-foamDictionary -entry N -set 40 "$d/system/parameters" > /dev/null
-foamDictionary -entry stabilisation -set 1 "$d/system/parameters" > /dev/null
-run "$d" blockMesh && run "$d" setBodies && run "$d" vheFoam \
-    || { fail stabilisedRun "$d"; finish; }
-read -r eu eb <<< "$(tail -1 "$d/postProcessing/couetteError/0/couetteError.dat" | awk '{print $6, $8}')"
+out=$(couette stabilised N=40 stabilisation=1) \
+    || { fail stabilisedRun "$WORK/stabilised"; finish; }
+read -r eu eb <<< "$out"
 check stabilisedVelocity "$eu < 1.2*2.22e-3" "elasticStabilisation 1: RMS L2 error of u over a period: $eu"
 check stabilisedStrain "$eb < 1.2*1.85e-3" "elasticStabilisation 1: RMS L2 error of B_xy: $eb"
 finish
