@@ -206,7 +206,7 @@ void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
     // trace over the solved directions only: the stress increment that the
     // semi-implicit momentum equation takes, Ghat phi_s dt (L + L^T -
     // 2/3 tr(L) I), is then exactly the increment of the stretched B*.)
-    volTensorField gradU(velocityGradient(U, deltaT, true));
+    volTensorField gradU(velocityGradient(U, deltaT));
     gradU.primitiveFieldRef() = dev(gradU.primitiveField());
     vhe_stretch
     (
@@ -219,8 +219,7 @@ void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
 Foam::tmp<Foam::volTensorField> Foam::vheElasticity::velocityGradient
 (
     const volVectorField& U,
-    scalar deltaT,
-    bool bulk
+    scalar deltaT
 ) const
 {
     if (stabilisation_ <= 0)
@@ -229,7 +228,7 @@ Foam::tmp<Foam::volTensorField> Foam::vheElasticity::velocityGradient
     }
     return
         fvc::grad(U)
-      + fvc::surfaceIntegrate(mesh_.Sf()*faceVelocityCorrection(U, deltaT, bulk));
+      + fvc::surfaceIntegrate(mesh_.Sf()*faceVelocityCorrection(U, deltaT, true));
 }
 
 
@@ -284,21 +283,25 @@ Foam::vheElasticity::faceVelocityCorrection
     // - at an interface (phi_s jumping), the face velocity that makes the
     //   traction continuous, as the face stress of divSigma does.
     const volSymmTensorField sig(sigma());
-    const surfaceSymmTensorField sigf(faceStress(sig, muEff));
-    const volVectorField divSig(fvc::surfaceIntegrate(mesh_.Sf() & sigf));
     const surfaceVectorField nf(mesh_.Sf()/mesh_.magSf());
-    const surfaceScalarField w(bulkWeight());
-    const volScalarField Z(impedance());
-    const surfaceScalarField Zf(fvc::interpolate(Z));
 
     surfaceVectorField du
     (
-        "du",
-        (bulk ? stabilisation_ : 0)*w
-       /(2*Zf + dimensionedScalar("small", Zf.dimensions(), ROOTVSMALL))
-       *((fvc::snGrad(sig) & nf) - fvc::interpolate(divSig))
-       /mesh_.deltaCoeffs()
+        IOobject("du", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedVector(dimVelocity, Zero)
     );
+    if (bulk)
+    {
+        const surfaceSymmTensorField sigf(faceStress(sig, muEff));
+        const volVectorField divSig(fvc::surfaceIntegrate(mesh_.Sf() & sigf));
+        const surfaceScalarField Zf(fvc::interpolate(impedance()));
+        du =
+            stabilisation_*bulkWeight()
+           /(2*Zf + dimensionedScalar("small", Zf.dimensions(), ROOTVSMALL))
+           *((fvc::snGrad(sig) & nf) - fvc::interpolate(divSig))
+           /mesh_.deltaCoeffs();
+    }
 
     const volScalarField& phis = mixture_.phis();
     const labelUList& own = mesh_.owner();
@@ -366,10 +369,19 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
 Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::stabilisation
 (
     const volVectorField& U,
+    const volTensorField& gradU,
     scalar deltaT
 ) const
 {
-    const volTensorField gradU(velocityGradient(U, deltaT, false));
+    // The wide part with the interface-consistent face velocities only
+    const volTensorField gradUc
+    (
+        gradU
+      + fvc::surfaceIntegrate
+        (
+            mesh_.Sf()*faceVelocityCorrection(U, deltaT, false)
+        )
+    );
     // Compact minus wide Laplacian of U with the viscosity
     // stabilisation x impedance x cell size, between solid cells only:
     // O(dx^3) on smooth fields, it damps the odd-even mode of U that the
@@ -382,7 +394,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::stabilisation
     );
     return
         fvm::laplacian(muSf, U, "laplacian(muStabilisation,U)")
-      - fvc::div(muSf*(mesh_.Sf() & fvc::interpolate(gradU)));
+      - fvc::div(muSf*(mesh_.Sf() & fvc::interpolate(gradUc)));
 }
 
 
