@@ -10,12 +10,16 @@ Description
     Phases by VOF (MULES, limitSum), B* = phi_s^(1/2) B transported with the
     upper-convected equation, elastic stress Ghat phi_s^(1/2) dev(B*) in the
     momentum equation, PIMPLE p_rgh pressure-velocity coupling as interFoam.
+    The mesh may be refined and unrefined at run time (dynamicRefineFvMesh,
+    constant/dynamicMeshDict) near every interface between phases.
     A case with one fluid and no solid is plain incompressible flow: the
     phase fractions, B* and the elastic term are not built at all.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "dynamicFvMesh.H"
+#include "CorrectPhi.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "clockTime.H"
@@ -38,11 +42,12 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
-    #include "createMesh.H"
+    #include "createDynamicFvMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"
     #include "initContinuityErrs.H"
     #include "createFields.H"
+    #include "createRefinement.H"
 
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
@@ -63,6 +68,8 @@ int main(int argc, char *argv[])
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        #include "updateMesh.H"
 
         while (pimple.loop())
         {

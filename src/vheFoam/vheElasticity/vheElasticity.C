@@ -64,10 +64,6 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
         patchTypes(mesh_)
     ),
     semiImplicit_(true),
-    sumMagSfByV_
-    (
-        fvc::surfaceSum(mesh_.magSf())().primitiveField()/mesh_.V()
-    ),
     stabilisation_(0)
 {
     const dictionary& pimple = mesh_.solutionDict().subDict("PIMPLE");
@@ -478,6 +474,12 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::vheElasticity::sumMagSfByV() const
+{
+    return fvc::surfaceSum(mesh_.magSf())().primitiveField()/mesh_.V();
+}
+
+
 Foam::scalar Foam::vheElasticity::courantNo(scalar deltaT) const
 {
     double co = 0;
@@ -485,7 +487,7 @@ Foam::scalar Foam::vheElasticity::courantNo(scalar deltaT) const
     (
         mesh_.nCells(), mixture_.Ghat().primitiveField().cdata(),
         mixture_.phis().primitiveField().cdata(),
-        mixture_.rho().primitiveField().cdata(), sumMagSfByV_.cdata(),
+        mixture_.rho().primitiveField().cdata(), sumMagSfByV()().cdata(),
         1, deltaT, &co
     );
     return returnReduce(scalar(co), maxOp<scalar>());
@@ -498,7 +500,7 @@ Foam::scalar Foam::vheElasticity::maxDeltaT(scalar maxCo) const
     (
         mesh_.nCells(), mixture_.Ghat().primitiveField().cdata(),
         mixture_.phis().primitiveField().cdata(),
-        mixture_.rho().primitiveField().cdata(), sumMagSfByV_.cdata(),
+        mixture_.rho().primitiveField().cdata(), sumMagSfByV()().cdata(),
         maxCo, 1, nullptr
     );
     return returnReduce(scalar(dt < VGREAT ? dt : VGREAT), minOp<scalar>());

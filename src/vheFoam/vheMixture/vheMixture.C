@@ -221,6 +221,7 @@ Foam::PtrList<Foam::surfaceScalarField> Foam::vheMixture::nHatfs() const
 void Foam::vheMixture::solveAlphaStep
 (
     scalar cAlpha,
+    label nLimitSumIter,
     scalar deltaT,
     scalar weight
 )
@@ -278,6 +279,33 @@ void Foam::vheMixture::solveAlphaStep
     }
 
     MULES::limitSum(alphaPhis);
+
+    // limitSum scales some phases' corrections down to make them sum to
+    // zero; where three or more phases meet that can take a phase out of
+    // its bounds (multiphaseMixture's alphas leave [0, 1] by ~1e-5), so
+    // limit each phase again and re-sum, nLimitSumIter times
+    for (label iter = 0; iter < nLimitSumIter; ++iter)
+    {
+        forAll(alphas_, i)
+        {
+            surfaceScalarField& alphaPhi = alphaPhis[i];
+            alphaPhi += upwind<scalar>(mesh_, phi_).flux(alphas_[i]);
+            MULES::limit
+            (
+                1.0/deltaT,
+                geometricOneField(),
+                alphas_[i],
+                phi_,
+                alphaPhi,
+                zeroField(),
+                zeroField(),
+                oneField(),
+                zeroField(),
+                true
+            );
+        }
+        MULES::limitSum(alphaPhis);
+    }
 
     rhoPhi_ = dimensionedScalar(rhoPhi_.dimensions(), Zero);
     scalarField sumAlpha(mesh_.nCells(), 0);
@@ -553,6 +581,11 @@ void Foam::vheMixture::solve()
     const dictionary& alphaControls = mesh_.solverDict("alpha");
     const label nSub = alphaControls.getOrDefault<label>("nAlphaSubCycles", 1);
     const scalar cAlpha = alphaControls.getOrDefault<scalar>("cAlpha", 1);
+    // Two phases need no re-limiting: their corrections are exact opposites
+    const label nLimitSumIter = alphaControls.getOrDefault<label>
+    (
+        "nLimitSumIter", alphas_.size() > 2 ? 2 : 0
+    );
     if (nSub < 1)
     {
         FatalIOErrorInFunction(alphaControls)
@@ -569,7 +602,7 @@ void Foam::vheMixture::solve()
 
     if (nSub == 1)
     {
-        solveAlphaStep(cAlpha, deltaT, 1);
+        solveAlphaStep(cAlpha, nLimitSumIter, deltaT, 1);
     }
     else
     {
@@ -588,7 +621,7 @@ void Foam::vheMixture::solve()
             {
                 for (volScalarField& alpha : alphas_) alpha.oldTime() == alpha;
             }
-            solveAlphaStep(cAlpha, deltaT/nSub, 1.0/nSub);
+            solveAlphaStep(cAlpha, nLimitSumIter, deltaT/nSub, 1.0/nSub);
             rhoPhiSum += rhoPhi_/scalar(nSub);
         }
         forAll(alphas_, i) alphas_[i].oldTime() == alpha0[i];
@@ -616,6 +649,29 @@ Foam::tmp<Foam::volScalarField> Foam::vheMixture::nearInterface() const
         tnear.ref() = max(tnear(), pos0(a - 0.01)*pos0(0.99 - a));
     }
     return tnear;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::vheMixture::interfaceIndicator() const
+{
+    tmp<volScalarField> tind
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                "interfaceIndicator", mesh_.time().timeName(), mesh_,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            ),
+            mesh_,
+            dimensionedScalar(dimless, Zero)
+        )
+    );
+    for (const volScalarField& a : alphas_)
+    {
+        tind.ref() = max(tind(), 4*a*(1 - a));
+    }
+    return tind;
 }
 
 

@@ -30,7 +30,8 @@ void Foam::functionObjects::solidDiagnostics::writeFileHeader(Ostream& os)
         const char* col :
         {"solidVolume", "maxDevB", "minEigBstar", "maxDetDrift",
          "kinetic", "elastic", "potential", "total", "dissipated",
-         "balance"}
+         "balance", "centroid_x", "centroid_y", "centroid_z",
+         "solidU_x", "solidU_y", "solidU_z"}
     )
     {
         writeTabbed(os, col);
@@ -102,6 +103,7 @@ bool Foam::functionObjects::solidDiagnostics::write()
 
     scalar solidVolume = 0, elastic = 0;
     double diag[3] = {0, 0, 0};
+    vector centroid(Zero), solidU(Zero);
 
     if (foundObject<volSymmTensorField>("Bstar"))
     {
@@ -113,6 +115,13 @@ bool Foam::functionObjects::solidDiagnostics::write()
         );
 
         solidVolume = gSum(phis.primitiveField()*V);
+        if (solidVolume > VSMALL)
+        {
+            centroid = gSum(phis.primitiveField()*V*mesh_.C().primitiveField())
+                /solidVolume;
+            solidU = gSum(phis.primitiveField()*V*U.primitiveField())
+                /solidVolume;
+        }
         vhe_elastic_energy
         (
             n, Ghat.primitiveField().cdata(), phis.primitiveField().cdata(),
@@ -147,6 +156,7 @@ bool Foam::functionObjects::solidDiagnostics::write()
         << ", max |dev B| " << diag[1]
         << ", min eig B* " << diag[0]
         << ", max |det B - 1| " << diag[2] << nl
+        << "    centroid " << centroid << ", velocity " << solidU << nl
         << "    kinetic " << kinetic << " J, elastic " << elastic
         << " J, potential " << potential << " J, dissipated " << dissipated_
         << " J, balance " << total + dissipated_ << " J" << nl << endl;
@@ -158,7 +168,15 @@ bool Foam::functionObjects::solidDiagnostics::write()
             << tab << solidVolume << tab << diag[1] << tab << diag[0]
             << tab << diag[2] << tab << kinetic << tab << elastic
             << tab << potential << tab << total << tab << dissipated_
-            << tab << total + dissipated_ << endl;
+            << tab << total + dissipated_;
+        for (const vector& v : {centroid, solidU})
+        {
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                file() << tab << v[d];
+            }
+        }
+        file() << endl;
     }
     return true;
 }

@@ -1,0 +1,49 @@
+"""Figures of a floatingBlock case (tutorials/floatingBlock) for the tests.
+
+Usage:
+  floating.py draft CASE HEIGHT T0   mean draft over t >= T0: water level at
+                                     the wall minus the body's lowest point
+                                     (centroid - HEIGHT/2, an upright box)
+  floating.py sink CASE HEIGHT       lowest point at the start and the end,
+                                     and the largest upward velocity
+  floating.py volumes CASE           largest relative drift of any phase
+                                     volume (phaseVolumes function object)
+"""
+import sys
+
+
+def table(path):
+    with open(path) as f:
+        return [[float(x) for x in line.split()] for line in f
+                if line.strip() and not line.startswith('#')]
+
+
+def diagnostics(case):
+    # solidDiagnostics columns: time, 10 scalars, centroid x y z, velocity x y z
+    return table(case + '/postProcessing/solidDiagnostics/0/solidDiagnostics.dat')
+
+
+def main():
+    what, case = sys.argv[1:3]
+    if what == 'draft':
+        height, t0 = float(sys.argv[3]), float(sys.argv[4])
+        level = {r[0]: r[1] for r in
+                 table(case + '/postProcessing/waterLevel/0/liquidLevel.dat')}
+        drafts = [level[r[0]] - (r[12] - height/2)
+                  for r in diagnostics(case) if r[0] >= t0 and r[0] in level]
+        print('%.6g' % (sum(drafts)/len(drafts)))
+    elif what == 'sink':
+        height = float(sys.argv[3])
+        d = diagnostics(case)
+        print('%.6g %.6g %.6g' % (d[0][12] - height/2, d[-1][12] - height/2,
+                                  max(r[15] for r in d)))
+    elif what == 'volumes':
+        v = table(case + '/postProcessing/phaseVolumes/0/volFieldValue.dat')
+        print('%.3g' % max(abs(r[k] - v[0][k])/v[0][k]
+                           for r in v for k in range(1, len(v[0]))
+                           if v[0][k] > 0))
+    else:
+        sys.exit(__doc__)
+
+
+main()

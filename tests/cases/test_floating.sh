@@ -1,0 +1,48 @@
+#!/bin/bash
+# Floating and sinking bodies and three fluids (seed 003), from the
+# floatingBlock tutorial's template on a 40 x 40 tank (dx = 0.025):
+#  - Archimedes: a stiff box (G/rho_s = 10 m^2/s^2, rigid-like: G/(rho U^2)
+#    ~ 1e3), rho_s = 500 in water (nu 1e-2) under air, 0.3 wide and 0.1
+#    tall (wide enough to float upright: a square of this density floats
+#    corner down), released at half its draft.  Its mean draft over
+#    2 <= t <= 3 must be the Archimedes one, (rho_s - rho_air)/(rho_water -
+#    rho_air) x height = 0.04995 m, within 2% of its height (measured
+#    0.0492, 0.8% of the height).
+#  - a box of rho_s = 2000 sinks: its lowest point falls from 0.3 m to
+#    within 0.075 m of the floor by t = 2 (measured 0.044: the last film of
+#    water drains slowly, as it should), never moving up.
+#  - three fluids and a body: the tutorial's soft disk dropped through air
+#    and oil into water; every phase volume conserved to 1e-6 relative
+#    (measured 2e-8), and in the two cases above.
+. "$(dirname "$0")/lib.sh"
+
+box=(nx=40 ny=40 depthOil=0 depthWater=0.5 shape=box blockWidth=0.3
+     blockHeight=0.1 GperRho=10 nuWater=1e-2 writeInterval=0.5)
+setup() {
+    local d="$WORK/$1"; shift
+    sceneCase floatingBlock "$d" "$@" && run "$d" setFields && run "$d" setBodies \
+        || fail setup "$d"
+    run "$d" vheFoam || fail "$(basename "$d")Run" "$d/log.vheFoam"
+}
+setup archimedes "${box[@]}" blockBottom=0.475 rhoSolid=500 endTime=3
+setup sinking "${box[@]}" blockBottom=0.3 rhoSolid=2000 endTime=2
+setup threeFluids nx=40 ny=40 endTime=1.5 writeInterval=0.5
+
+figure() { python3 "$TESTS_DIR/floating.py" "$@"; }
+
+exact=$(python3 -c "print((500 - 1)/(1000 - 1)*0.1)")
+draft=$(figure draft "$WORK/archimedes" 0.1 2)
+check archimedesDraft "abs($draft - $exact) < 0.02*0.1" \
+    "draft $draft m, Archimedes $exact m (height 0.1 m)"
+
+read -r bottom0 bottom1 maxUp <<< "$(figure sink "$WORK/sinking" 0.1)"
+check heavyBodySinks "$bottom0 > 0.29 and $bottom1 < 0.075 and $maxUp <= 0" \
+    "lowest point $bottom0 -> $bottom1 m, largest upward velocity $maxUp m/s"
+
+for c in archimedes sinking threeFluids; do
+    drift=$(figure volumes "$WORK/$c")
+    check "${c}Volumes" "$drift < 1e-6" "largest relative phase volume drift $drift"
+done
+read -r lo hi <<< "$(alphaRange "$WORK/threeFluids/log.vheFoam")"
+check threeFluidsBounded "$lo > -1e-6 and $hi < 1 + 1e-6" "alpha in [$lo, $hi]"
+finish
