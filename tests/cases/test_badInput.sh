@@ -64,6 +64,8 @@ d=$(variant negativeG); setEntry "$d/$P" solids/rubber/G "[1 -1 -2 0 0 0 0] -1"
 expectFatal negativeG "$d" vheFoam "G of rubber must be positive" vheProperties
 d=$(variant negativeRho); setEntry "$d/$P" fluids/liquid/rho "[1 -3 0 0 0 0 0] -1"
 expectFatal negativeRho "$d" vheFoam "rho of liquid must be positive" vheProperties
+d=$(variant zeroBodyDensity); setEntry "$d/$P" solids/rubber/rho "[1 -3 0 0 0 0 0] 0"
+expectFatal zeroBodyDensity "$d" vheFoam "rho of rubber must be positive" vheProperties
 d=$(variant missingViscosity); delEntry "$d/$P" fluids/liquid/mu
 expectFatal missingViscosity "$d" vheFoam "exactly one of 'mu'" vheProperties
 d=$(variant negativeNu); setEntry "$d/$P" solids/rubber/nu "[0 2 -1 0 0 0 0] -2"
@@ -98,6 +100,26 @@ d=$(variant unknownElasticity); sed -i 's/^    pRefValue .*/&\n    elasticity im
 expectFatal unknownElasticity "$d" vheFoam "Unknown elasticity 'implicitish'" fvSolution
 d=$(variant negativeStabilisation); sed -i 's/^    pRefValue .*/&\n    elasticStabilisation -1;/' "$d/system/fvSolution"
 expectFatal negativeStabilisation "$d" vheFoam "elasticStabilisation must be >= 0" fvSolution
+
+# ---- vheFoam: constant/dynamicMeshDict (run-time refinement)
+# writeRefinement DIR FIELD FLUXES: a dynamicRefineFvMesh dictionary
+writeRefinement() {
+    cat > "$1/constant/dynamicMeshDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }
+dynamicFvMesh dynamicRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{
+    refineInterval 1; field $2; lowerRefineLevel 0.01; upperRefineLevel 2;
+    nBufferLayers 1; maxRefinement 1; maxCells 100000; dumpLevel false;
+    correctFluxes ( $3 );
+}
+DICT
+}
+allFluxes="(phi none) (alphaPhiSolid none) (rhoPhi none) (ghf none)"
+d=$(variant refineOnUnknownField); writeRefinement "$d" alpha.gas "$allFluxes"
+expectFatal refineOnUnknownField "$d" vheFoam "field alpha.gas is not a volScalarField" dynamicMeshDict
+d=$(variant refineMissingFlux); writeRefinement "$d" interfaceIndicator "(phi none)"
+expectFatal refineMissingFlux "$d" vheFoam "correctFluxes does not list the fluxes" dynamicMeshDict
 
 # ---- setBodies: system/setBodiesDict
 B=system/setBodiesDict

@@ -13,7 +13,8 @@ vhe_build_if_missing()
 
 # vhe_scene_case SCENE DIR KEY=VALUE...: case DIR from SCENE's template/
 # and parameters (SCENE: a tutorial directory), with the given entries of
-# its system/parameters changed, meshed with blockMesh
+# its system/parameters changed, meshed with blockMesh, or with gmsh when
+# the template has a NAME.geo instead of a blockMeshDict
 vhe_scene_case()
 {
     local scene=$1 dir=$2 kv; shift 2
@@ -25,7 +26,24 @@ vhe_scene_case()
         foamDictionary -entry "${kv%%=*}" -set "${kv#*=}" \
             "$dir/system/parameters" > /dev/null || return 1
     done
-    vhe_run "$dir" blockMesh
+    if [ -f "$dir/system/blockMeshDict" ]; then
+        vhe_run "$dir" blockMesh
+    else
+        vhe_gmsh_mesh "$dir"
+    fi
+}
+
+# vhe_gmsh_mesh DIR: mesh DIR/NAME.geo with gmsh (cell size: the entry dx
+# of system/parameters), convert it (gmshToFoam) and give the patches their
+# types (system/changeDictionaryDict)
+vhe_gmsh_mesh()
+{
+    local dir=$1 geo dx
+    geo=$(cd "$dir" && ls ./*.geo) || { echo "no blockMeshDict or .geo in $dir" >&2; return 1; }
+    dx=$(foamDictionary -entry dx -value "$dir/system/parameters") || return 1
+    vhe_run "$dir" gmsh -3 -setnumber dx "$dx" "$geo" -o mesh.msh || return 1
+    vhe_run "$dir" gmshToFoam mesh.msh || return 1
+    vhe_run "$dir" changeDictionary
 }
 
 # vhe_run CASE APP [ARGS]: run APP in CASE, log to CASE/log.APP; stop on error

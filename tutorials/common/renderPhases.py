@@ -82,7 +82,7 @@ else:
     o.AmbientColor = o.DiffuseColor = [0, 0, 0]
     cx, cy, cz = 0.5*(xmin + xmax), 0.5*(ymin + ymax), 0.5*(zmin + zmax)
     size = max(xmax - xmin, zmax - zmin)
-    view.CameraPosition = [cx + 0.3*size, cy - 2.2*size, cz + 0.3*size]
+    view.CameraPosition = [cx + 0.4*size, cy - 2.2*size, cz + 0.9*size]
     view.CameraFocalPoint = [cx, cy, cz]
     view.CameraViewUp = [0, 0, 1]
 

@@ -1,0 +1,35 @@
+#!/bin/bash
+# Plots (gnuplot) and images (pvbatch) of a bubbleObstacle case; called by
+# Allrun, can be rerun on its own.   ./postProcess.sh [amr|uniform]
+cd "$(dirname "$0")" || exit 1
+. ../common/functions.sh
+name=${1:-amr}
+d=cases/$name
+mkdir -p results
+
+# Relative drift of each phase volume; cell count per step from the log
+awk '!/^#/ {if (!n++) for (k = 2; k <= NF; k++) v0[k] = $k
+            printf "%s", $1; for (k = 2; k <= NF; k++) printf " %.6e", $k/v0[k] - 1; print ""}' \
+    "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" > "results/volumeDrift_$name.dat"
+awk '/^Time = / {t = $3} /^Mesh refined: / {print t, $3}' "$d/log.vheFoam" \
+    > "results/cells_$name.dat"
+ncols=$(awk '!/^#/ {print NF; exit}' "results/volumeDrift_$name.dat")
+gnuplot <<GP || exit 1
+set terminal pngcairo size 1000,600 font ",12"
+set output 'results/volumeDrift_$name.png'
+set xlabel 't [s]'; set ylabel 'V(t)/V(0) - 1'; set grid
+set title 'Phase volumes through refinement and unrefinement ($name)'
+plot for [k=2:$ncols] 'results/volumeDrift_$name.dat' u 1:k w l lw 2 \
+     t word("water air ball", k - 1)
+set output 'results/cells_$name.png'
+set ylabel 'cells'; set title 'Cell count of the refined mesh'
+plot 'results/cells_$name.dat' u 1:2 w steps lw 2 t 'dynamicRefineFvMesh'
+GP
+
+touch "$d/$name.foam"
+xvfb-run -a pvbatch ../common/renderPhases.py "$d/$name.foam" "results/scene_$name" \
+    alpha.air,phis 0 0.5 1 1.5 > "results/log.pvbatch.$name" 2>&1 \
+    || { echo "pvbatch failed: results/log.pvbatch.$name" >&2; exit 1; }
+awk '{for (k = 2; k <= NF; k++) if ($k*$k > m) m = $k*$k} END {printf "Largest relative phase volume drift: %.2g\n", sqrt(m)}' \
+    "results/volumeDrift_$name.dat"
+echo "Results in $(pwd)/results: $(cd results && ls ./*"$name"* | tr '\n' ' ')"

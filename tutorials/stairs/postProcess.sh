@@ -1,0 +1,30 @@
+#!/bin/bash
+# Plots (gnuplot) and images (pvbatch) of the stairs case; called by
+# Allrun, can be rerun on its own.
+cd "$(dirname "$0")" || exit 1
+. ../common/functions.sh
+d=cases/stairs
+mkdir -p results
+
+awk '!/^#/ {if (!n++) for (k = 2; k <= NF; k++) v0[k] = $k
+            printf "%s", $1; for (k = 2; k <= NF; k++) printf " %.6e", $k/v0[k] - 1; print ""}' \
+    "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" > results/volumeDrift.dat
+cp "$d/postProcessing/stepLevels/0/liquidLevel.dat" results/stepLevels.dat
+gnuplot <<GP || exit 1
+set terminal pngcairo size 1000,600 font ",12"
+set output 'results/stepLevels.png'
+set xlabel 't [s]'; set ylabel 'water depth [m]'; set grid
+set title 'Water falling down stairs: depth on each step (step 1 at the top)'
+plot for [k=2:5] 'results/stepLevels.dat' u 1:k w l lw 2 t sprintf('step %d', k - 1)
+set output 'results/volumeDrift.png'
+set ylabel 'V(t)/V(0) - 1'; set title 'Phase volumes: relative drift'
+plot for [k=2:3] 'results/volumeDrift.dat' u 1:k w l lw 2 t word("water air", k - 1)
+GP
+
+touch "$d/stairs.foam"
+xvfb-run -a pvbatch ../common/renderPhases.py "$d/stairs.foam" results/scene \
+    alpha.water 0 0.5 1 2 3 > results/log.pvbatch 2>&1 \
+    || { echo "pvbatch failed: results/log.pvbatch" >&2; exit 1; }
+awk '{for (k = 2; k <= NF; k++) if ($k*$k > m) m = $k*$k} END {printf "Largest relative phase volume drift: %.2g\n", sqrt(m)}' \
+    results/volumeDrift.dat
+echo "Results in $(pwd)/results: $(cd results && ls ./*.dat ./*.png | tr '\n' ' ')"
