@@ -21,10 +21,17 @@ set xlabel 't [s]'; set ylabel 'V(t)/V(0) - 1'; set grid
 set title 'Phase volumes through refinement and unrefinement ($name)'
 plot for [k=2:$ncols] 'results/volumeDrift_$name.dat' u 1:k w l lw 2 \
      t word("water air ball", k - 1)
+GP
+# the cell count, when the mesh changed
+if [ -s "results/cells_$name.dat" ]; then
+    gnuplot <<GP || exit 1
+set terminal pngcairo size 1000,600 font ",12"
 set output 'results/cells_$name.png'
-set ylabel 'cells'; set title 'Cell count of the refined mesh'
+set xlabel 't [s]'; set ylabel 'cells'; set grid
+set title 'Cell count of the refined mesh'
 plot 'results/cells_$name.dat' u 1:2 w steps lw 2 t 'dynamicRefineFvMesh'
 GP
+fi
 
 touch "$d/$name.foam"
 xvfb-run -a pvbatch ../common/renderPhases.py "$d/$name.foam" "results/scene_$name" \

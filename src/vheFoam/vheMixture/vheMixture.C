@@ -280,16 +280,53 @@ void Foam::vheMixture::solveAlphaStep
 
     MULES::limitSum(alphaPhis);
 
-    // limitSum scales some phases' corrections down to make them sum to
-    // zero; where three or more phases meet that can take a phase out of
-    // its bounds (multiphaseMixture's alphas leave [0, 1] by ~1e-5), so
-    // limit each phase again and re-sum, nLimitSumIter times
-    for (label iter = 0; iter < nLimitSumIter; ++iter)
+    // The bounded low-order (upwind) part of each phase's flux
+    PtrList<surfaceScalarField> alphaPhiUDs(alphas_.size());
+    forAll(alphas_, i)
     {
+        alphaPhiUDs.set(i, upwind<scalar>(mesh_, phi_).flux(alphas_[i]));
+    }
+
+    // limitSum scales some phases' corrections down to make them sum to
+    // zero; where three or more phases meet, that can take a phase out of
+    // its bounds (multiphaseMixture's alphas leave [0, 1] by ~1e-5).  So
+    // the update is checked first, and a step where a phase would leave
+    // [0, 1] by more than 1e-10 is limited again and re-summed, up to
+    // nLimitSumIter times: the cost is paid only where it is needed.
+    PtrList<scalarField> alphaNew(alphas_.size());
+    for (label iter = 0; ; ++iter)
+    {
+        scalar lo = GREAT, hi = -GREAT;
+        forAll(alphas_, i)
+        {
+            // Explicit update from the sub-step's old value
+            // (MULES::explicitSolve with unit density, written out so that
+            // sub-steps are exact)
+            alphaNew.set
+            (
+                i,
+                new scalarField
+                (
+                    alphas_[i].oldTime().primitiveField()
+                  - deltaT*fvc::surfaceIntegrate
+                    (
+                        alphaPhis[i] + alphaPhiUDs[i]
+                    )().primitiveField()
+                )
+            );
+            lo = min(lo, min(alphaNew[i]));
+            hi = max(hi, max(alphaNew[i]));
+        }
+        reduce(lo, minOp<scalar>());
+        reduce(hi, maxOp<scalar>());
+        if ((lo >= -1e-10 && hi <= 1 + 1e-10) || iter >= nLimitSumIter)
+        {
+            break;
+        }
         forAll(alphas_, i)
         {
             surfaceScalarField& alphaPhi = alphaPhis[i];
-            alphaPhi += upwind<scalar>(mesh_, phi_).flux(alphas_[i]);
+            alphaPhi += alphaPhiUDs[i];
             MULES::limit
             (
                 1.0/deltaT,
@@ -314,13 +351,8 @@ void Foam::vheMixture::solveAlphaStep
     {
         volScalarField& alpha = alphas_[i];
         surfaceScalarField& alphaPhi = alphaPhis[i];
-        alphaPhi += upwind<scalar>(mesh_, phi_).flux(alpha);
-
-        // Explicit update from the sub-step's old value (MULES::explicitSolve
-        // with unit density, written out so that sub-steps are exact)
-        alpha.primitiveFieldRef() =
-            alpha.oldTime().primitiveField()
-          - deltaT*fvc::surfaceIntegrate(alphaPhi)().primitiveField();
+        alphaPhi += alphaPhiUDs[i];
+        alpha.primitiveFieldRef() = alphaNew[i];
         alpha.correctBoundaryConditions();
 
         rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, phases_[i].rho);
