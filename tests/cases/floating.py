@@ -8,7 +8,11 @@ Usage:
                                      and the largest upward velocity
   floating.py volumes CASE           largest relative drift of any phase
                                      volume (phaseVolumes function object)
+  floating.py airSpeed CASE TIME     largest speed in pure air (alpha.air
+                                     > 0.99) at TIME (ascii fields)
 """
+import math
+import re
 import sys
 
 
@@ -21,6 +25,16 @@ def table(path):
 def diagnostics(case):
     # solidDiagnostics columns: time, 10 scalars, centroid x y z, velocity x y z
     return table(case + '/postProcessing/solidDiagnostics/0/solidDiagnostics.dat')
+
+
+def internalField(path, kind):
+    text = open(path).read()
+    m = re.search(r'internalField\s+nonuniform\s+List<%s>\s*(\d+)\s*\((.*?)\n\)'
+                  % kind, text, re.S)
+    values = [line.strip('() ').split() for line in m.group(2).split('\n')
+              if line.strip()]
+    return [[float(x) for x in v] for v in values] if kind == 'vector' \
+        else [float(v[0]) for v in values]
 
 
 def main():
@@ -42,6 +56,12 @@ def main():
         print('%.3g' % max(abs(r[k] - v[0][k])/v[0][k]
                            for r in v for k in range(1, len(v[0]))
                            if v[0][k] > 0))
+    elif what == 'airSpeed':
+        time = sys.argv[3]
+        U = internalField('%s/%s/U' % (case, time), 'vector')
+        air = internalField('%s/%s/alpha.air' % (case, time), 'scalar')
+        print('%.3g' % max(math.sqrt(sum(c*c for c in u))
+                           for u, a in zip(U, air) if a > 0.99))
     else:
         sys.exit(__doc__)
 

@@ -448,6 +448,92 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
 }
 
 
+Foam::tmp<Foam::volVectorField> Foam::vheElasticity::gasFaceTranspose
+(
+    const volTensorField& gradU,
+    scalar deltaT
+) const
+{
+    tmp<volVectorField> tsource
+    (
+        new volVectorField
+        (
+            IOobject("gasFaceTranspose", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedVector(dimForce/dimVolume, Zero)
+        )
+    );
+    vectorField& source = tsource.ref().primitiveFieldRef();
+
+    const scalarField& rho = mixture_.rho().primitiveField();
+    const scalarField& phis = mixture_.phis().primitiveField();
+    const scalarField& Ghat = mixture_.Ghat().primitiveField();
+    const tensorField& L = gradU.primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.Sf().primitiveField();
+    const scalarField& w = mesh_.weights().primitiveField();
+
+    forAll(own, facei)
+    {
+        const label P = own[facei], N = nei[facei];
+        const scalar muP = deltaT*Ghat[P]*phis[P];
+        const scalar muN = deltaT*Ghat[N]*phis[N];
+        if (muP <= 0 && muN <= 0) continue;
+        const scalar share = 1 - min(rho[P], rho[N])/max(rho[P], rho[N]);
+        if (share <= 0) continue;
+
+        // Linear interpolation of muElastic dev2(grad U^T), as fvc::div
+        const tensor tP(muP*dev2(L[P].T()));
+        const tensor tN(muN*dev2(L[N].T()));
+        const vector flux
+        (
+            share*(Sf[facei] & (w[facei]*tP + (1 - w[facei])*tN))
+        );
+        source[P] += flux;
+        source[N] -= flux;
+    }
+
+    // Processor and cyclic faces: the cell across from the neighbour side
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (!mesh_.boundary()[patchi].coupled()) continue;
+        const labelUList& cells = mesh_.boundary()[patchi].faceCells();
+        const scalarField rhoN
+        (
+            mixture_.rho().boundaryField()[patchi].patchNeighbourField()
+        );
+        const scalarField muNs
+        (
+            deltaT
+           *mixture_.Ghat().boundaryField()[patchi].patchNeighbourField()
+           *mixture_.phis().boundaryField()[patchi].patchNeighbourField()
+        );
+        const tensorField LN
+        (
+            gradU.boundaryField()[patchi].patchNeighbourField()
+        );
+        const vectorField& Sfp = mesh_.Sf().boundaryField()[patchi];
+        const scalarField& wp = mesh_.weights().boundaryField()[patchi];
+        forAll(cells, i)
+        {
+            const label P = cells[i];
+            const scalar muP = deltaT*Ghat[P]*phis[P];
+            if (muP <= 0 && muNs[i] <= 0) continue;
+            const scalar share =
+                1 - min(rho[P], rhoN[i])/max(rho[P], rhoN[i]);
+            if (share <= 0) continue;
+            const tensor tP(muP*dev2(L[P].T()));
+            const tensor tN(muNs[i]*dev2(LN[i].T()));
+            source[P] += share*(Sfp[i] & (wp[i]*tP + (1 - wp[i])*tN));
+        }
+    }
+
+    source /= mesh_.V();
+    return tsource;
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muEff
 (
     scalar deltaT
