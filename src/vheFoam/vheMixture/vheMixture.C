@@ -280,11 +280,20 @@ void Foam::vheMixture::solveAlphaStep
 
     MULES::limitSum(alphaPhis);
 
-    // The bounded low-order (upwind) part of each phase's flux
-    PtrList<surfaceScalarField> alphaPhiUDs(alphas_.size());
+    // Full fluxes: the bounded low-order (upwind) part plus the limited
+    // correction; the upwind parts are kept only for re-limiting
+    PtrList<surfaceScalarField> alphaPhiUDs
+    (
+        nLimitSumIter > 0 ? alphas_.size() : 0
+    );
     forAll(alphas_, i)
     {
-        alphaPhiUDs.set(i, upwind<scalar>(mesh_, phi_).flux(alphas_[i]));
+        tmp<surfaceScalarField> tUD(upwind<scalar>(mesh_, phi_).flux(alphas_[i]));
+        alphaPhis[i] += tUD();
+        if (nLimitSumIter > 0)
+        {
+            alphaPhiUDs.set(i, tUD.ptr());
+        }
     }
 
     // limitSum scales some phases' corrections down to make them sum to
@@ -295,45 +304,36 @@ void Foam::vheMixture::solveAlphaStep
     // nLimitSumIter times: the cost is paid only where it is needed (one
     // step in ten in the floatingBlock tutorial).  Overshoots above 1 need
     // no pass: the sum correction below takes them out once all are >= 0.
-    PtrList<scalarField> alphaNew(alphas_.size());
-    for (label iter = 0; ; ++iter)
+    for (label iter = 0; iter < nLimitSumIter; ++iter)
     {
         scalar lo = GREAT;
         forAll(alphas_, i)
         {
-            // Explicit update from the sub-step's old value
-            // (MULES::explicitSolve with unit density, written out so that
-            // sub-steps are exact)
-            alphaNew.set
+            lo = min
             (
-                i,
-                new scalarField
+                lo,
+                min
                 (
                     alphas_[i].oldTime().primitiveField()
-                  - deltaT*fvc::surfaceIntegrate
-                    (
-                        alphaPhis[i] + alphaPhiUDs[i]
-                    )().primitiveField()
+                  - deltaT*fvc::surfaceIntegrate(alphaPhis[i])().primitiveField()
                 )
             );
-            lo = min(lo, min(alphaNew[i]));
         }
         reduce(lo, minOp<scalar>());
-        if (lo >= -1e-9 || iter >= nLimitSumIter)
+        if (lo >= -1e-9)
         {
             break;
         }
         forAll(alphas_, i)
         {
-            surfaceScalarField& alphaPhi = alphaPhis[i];
-            alphaPhi += alphaPhiUDs[i];
+            // Takes the full flux, returns the limited correction
             MULES::limit
             (
                 1.0/deltaT,
                 geometricOneField(),
                 alphas_[i],
                 phi_,
-                alphaPhi,
+                alphaPhis[i],
                 zeroField(),
                 zeroField(),
                 oneField(),
@@ -342,6 +342,10 @@ void Foam::vheMixture::solveAlphaStep
             );
         }
         MULES::limitSum(alphaPhis);
+        forAll(alphas_, i)
+        {
+            alphaPhis[i] += alphaPhiUDs[i];
+        }
     }
 
     rhoPhi_ = dimensionedScalar(rhoPhi_.dimensions(), Zero);
@@ -350,9 +354,13 @@ void Foam::vheMixture::solveAlphaStep
     forAll(alphas_, i)
     {
         volScalarField& alpha = alphas_[i];
-        surfaceScalarField& alphaPhi = alphaPhis[i];
-        alphaPhi += alphaPhiUDs[i];
-        alpha.primitiveFieldRef() = alphaNew[i];
+        const surfaceScalarField& alphaPhi = alphaPhis[i];
+
+        // Explicit update from the sub-step's old value (MULES::explicitSolve
+        // with unit density, written out so that sub-steps are exact)
+        alpha.primitiveFieldRef() =
+            alpha.oldTime().primitiveField()
+          - deltaT*fvc::surfaceIntegrate(alphaPhi)().primitiveField();
         alpha.correctBoundaryConditions();
 
         rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, phases_[i].rho);
