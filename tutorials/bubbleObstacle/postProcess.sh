@@ -8,9 +8,8 @@ d=cases/$name
 mkdir -p results
 
 # Relative drift of each phase volume; cell count per step from the log
-awk '!/^#/ {if (!n++) for (k = 2; k <= NF; k++) v0[k] = $k
-            printf "%s", $1; for (k = 2; k <= NF; k++) printf " %.6e", $k/v0[k] - 1; print ""}' \
-    "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" > "results/volumeDrift_$name.dat"
+vhe_volume_drift "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" \
+    "results/volumeDrift_$name.dat" || exit 1
 awk '/^Time = / {t = $3} /^Mesh refined: / {print t, $3}' "$d/log.vheFoam" \
     > "results/cells_$name.dat"
 ncols=$(awk '!/^#/ {print NF; exit}' "results/volumeDrift_$name.dat")
@@ -37,6 +36,4 @@ touch "$d/$name.foam"
 xvfb-run -a pvbatch ../common/renderPhases.py "$d/$name.foam" "results/scene_$name" \
     alpha.air,phis 0 0.5 1 1.5 > "results/log.pvbatch.$name" 2>&1 \
     || { echo "pvbatch failed: results/log.pvbatch.$name" >&2; exit 1; }
-awk '{for (k = 2; k <= NF; k++) if ($k*$k > m) m = $k*$k} END {printf "Largest relative phase volume drift: %.2g\n", sqrt(m)}' \
-    "results/volumeDrift_$name.dat"
 echo "Results in $(pwd)/results: $(cd results && ls ./*"$name"* | tr '\n' ' ')"

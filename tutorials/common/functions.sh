@@ -90,3 +90,15 @@ vhe_run_pool()
     done
     return $failed
 }
+
+# vhe_volume_drift DAT OUT: V(t)/V(0) - 1 for every column of a
+# volFieldValue volIntegrate output (the phase volumes) into OUT; prints
+# the largest drift
+vhe_volume_drift()
+{
+    awk '!/^#/ {if (!n++) for (k = 2; k <= NF; k++) v0[k] = $k
+                printf "%s", $1; for (k = 2; k <= NF; k++) printf " %.6e", $k/v0[k] - 1; print ""}' \
+        "$1" > "$2" || return 1
+    awk '{for (k = 2; k <= NF; k++) if ($k*$k > m) m = $k*$k}
+         END {printf "Largest relative phase volume drift: %.2g\n", sqrt(m)}' "$2"
+}

@@ -8,9 +8,8 @@ mkdir -p results
 
 # Relative drift of each phase volume, and the disk's height against the
 # oil/water interface of the undisturbed layers
-awk '!/^#/ {if (!n++) for (k = 2; k <= NF; k++) v0[k] = $k
-            printf "%s", $1; for (k = 2; k <= NF; k++) printf " %.6e", $k/v0[k] - 1; print ""}' \
-    "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" > results/volumeDrift.dat
+vhe_volume_drift "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" \
+    results/volumeDrift.dat || exit 1
 awk '!/^#/ {print $1, $13}' "$d/postProcessing/solidDiagnostics/0/solidDiagnostics.dat" \
     > results/diskHeight.dat
 interface=$(foamDictionary -entry depthWater -value "$d/system/parameters")
@@ -32,6 +31,4 @@ touch "$d/disk.foam"
 xvfb-run -a pvbatch ../common/renderPhases.py "$d/disk.foam" results/scene \
     alpha.water,alpha.oil,alpha.block 0 1 2 5 > results/log.pvbatch 2>&1 \
     || { echo "pvbatch failed: results/log.pvbatch" >&2; exit 1; }
-awk '{for (k = 2; k <= NF; k++) if ($k*$k > m) m = $k*$k} END {printf "Largest relative phase volume drift: %.2g\n", sqrt(m)}' \
-    results/volumeDrift.dat
 echo "Results in $(pwd)/results: $(cd results && ls ./*.dat ./*.png | tr '\n' ' ')"

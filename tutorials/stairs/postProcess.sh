@@ -6,9 +6,8 @@ cd "$(dirname "$0")" || exit 1
 d=cases/stairs
 mkdir -p results
 
-awk '!/^#/ {if (!n++) for (k = 2; k <= NF; k++) v0[k] = $k
-            printf "%s", $1; for (k = 2; k <= NF; k++) printf " %.6e", $k/v0[k] - 1; print ""}' \
-    "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" > results/volumeDrift.dat
+vhe_volume_drift "$d/postProcessing/phaseVolumes/0/volFieldValue.dat" \
+    results/volumeDrift.dat || exit 1
 cp "$d/postProcessing/stepLevels/0/liquidLevel.dat" results/stepLevels.dat
 gnuplot <<GP || exit 1
 set terminal pngcairo size 1000,600 font ",12"
@@ -25,6 +24,4 @@ touch "$d/stairs.foam"
 xvfb-run -a pvbatch ../common/renderPhases.py "$d/stairs.foam" results/scene \
     alpha.water 0 0.5 1 2 3 > results/log.pvbatch 2>&1 \
     || { echo "pvbatch failed: results/log.pvbatch" >&2; exit 1; }
-awk '{for (k = 2; k <= NF; k++) if ($k*$k > m) m = $k*$k} END {printf "Largest relative phase volume drift: %.2g\n", sqrt(m)}' \
-    results/volumeDrift.dat
 echo "Results in $(pwd)/results: $(cd results && ls ./*.dat ./*.png | tr '\n' ' ')"

@@ -234,6 +234,25 @@ void Foam::vheMixture::solveAlphaStep
 
     const PtrList<surfaceScalarField> nHatij(nHatfs());
     PtrList<surfaceScalarField> alphaPhis(alphas_.size());
+
+    // MULES: phase i's full flux in, its limited correction to the upwind
+    // flux out (returnCorr), bounds [0, 1]
+    const auto limitCorrection = [&](const label i)
+    {
+        MULES::limit
+        (
+            1.0/deltaT,
+            geometricOneField(),
+            alphas_[i],
+            phi_,
+            alphaPhis[i],
+            zeroField(),
+            zeroField(),
+            oneField(),
+            zeroField(),
+            true
+        );
+    };
     forAll(alphas_, i)
     {
         volScalarField& alpha = alphas_[i];
@@ -262,20 +281,7 @@ void Foam::vheMixture::solveAlphaStep
             );
         }
 
-        // Limited correction to the upwind flux (returnCorr = true)
-        MULES::limit
-        (
-            1.0/deltaT,
-            geometricOneField(),
-            alpha,
-            phi_,
-            alphaPhi,
-            zeroField(),
-            zeroField(),
-            oneField(),
-            zeroField(),
-            true
-        );
+        limitCorrection(i);
     }
 
     MULES::limitSum(alphaPhis);
@@ -326,20 +332,7 @@ void Foam::vheMixture::solveAlphaStep
         }
         forAll(alphas_, i)
         {
-            // Takes the full flux, returns the limited correction
-            MULES::limit
-            (
-                1.0/deltaT,
-                geometricOneField(),
-                alphas_[i],
-                phi_,
-                alphaPhis[i],
-                zeroField(),
-                zeroField(),
-                oneField(),
-                zeroField(),
-                true
-            );
+            limitCorrection(i);
         }
         MULES::limitSum(alphaPhis);
         forAll(alphas_, i)
