@@ -120,6 +120,13 @@ d=$(variant refineOnUnknownField); writeRefinement "$d" alpha.gas "$allFluxes"
 expectFatal refineOnUnknownField "$d" vheFoam "field alpha.gas is not a volScalarField" dynamicMeshDict
 d=$(variant refineMissingFlux); writeRefinement "$d" interfaceIndicator "(phi none)"
 expectFatal refineMissingFlux "$d" vheFoam "correctFluxes does not list the fluxes" dynamicMeshDict
+d=$(variant movingMesh)
+cat > "$d/constant/dynamicMeshDict" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }
+dynamicFvMesh dynamicMotionSolverFvMesh; motionSolverLibs (fvMotionSolvers);
+motionSolver solidBody; solidBodyMotionFunction linearMotion; velocity (0 0 0);
+DICT
+expectFatal movingMesh "$d" vheFoam "dynamicFvMesh dynamicMotionSolverFvMesh is not supported" dynamicMeshDict
 
 # ---- setBodies: system/setBodiesDict
 B=system/setBodiesDict
