@@ -302,6 +302,17 @@ void Foam::vheMixture::solveAlphaStep
         }
     }
 
+    // Explicit update from the sub-step's old value (MULES::explicitSolve
+    // with unit density, written out so that sub-steps are exact)
+    const auto update = [&](const label i)
+    {
+        return tmp<scalarField>
+        (
+            alphas_[i].oldTime().primitiveField()
+          - deltaT*fvc::surfaceIntegrate(alphaPhis[i])().primitiveField()
+        );
+    };
+
     // limitSum scales some phases' corrections down to make them sum to
     // zero; where three or more phases meet, that can take a phase out of
     // its bounds (multiphaseMixture's alphas leave [0, 1] by ~1e-5).  So
@@ -310,23 +321,18 @@ void Foam::vheMixture::solveAlphaStep
     // nLimitSumIter times: the cost is paid only where it is needed (one
     // step in ten in the floatingBlock tutorial).  Overshoots above 1 need
     // no pass: the sum correction below takes them out once all are >= 0.
-    for (label iter = 0; iter < nLimitSumIter; ++iter)
+    // The last check's update is the step's.
+    PtrList<scalarField> alphaNew(alphas_.size());
+    for (label iter = 0; nLimitSumIter > 0; ++iter)
     {
         scalar lo = GREAT;
         forAll(alphas_, i)
         {
-            lo = min
-            (
-                lo,
-                min
-                (
-                    alphas_[i].oldTime().primitiveField()
-                  - deltaT*fvc::surfaceIntegrate(alphaPhis[i])().primitiveField()
-                )
-            );
+            alphaNew.set(i, update(i).ptr());
+            lo = min(lo, min(alphaNew[i]));
         }
         reduce(lo, minOp<scalar>());
-        if (lo >= -1e-9)
+        if (lo >= -1e-9 || iter == nLimitSumIter)
         {
             break;
         }
@@ -349,11 +355,9 @@ void Foam::vheMixture::solveAlphaStep
         volScalarField& alpha = alphas_[i];
         const surfaceScalarField& alphaPhi = alphaPhis[i];
 
-        // Explicit update from the sub-step's old value (MULES::explicitSolve
-        // with unit density, written out so that sub-steps are exact)
+        // The update of the bounds check when there was one
         alpha.primitiveFieldRef() =
-            alpha.oldTime().primitiveField()
-          - deltaT*fvc::surfaceIntegrate(alphaPhi)().primitiveField();
+            alphaNew.set(i) ? alphaNew[i] : update(i)();
         alpha.correctBoundaryConditions();
 
         rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, phases_[i].rho);
