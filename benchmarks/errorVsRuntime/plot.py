@@ -13,6 +13,42 @@ import sys
 from collections import defaultdict
 
 
+def final_u(case_dir):
+    """x-velocity of every cell at the last time of a case (or None)."""
+    times = [t for t in os.listdir(case_dir)
+             if t.replace(".", "", 1).isdigit() and float(t) > 0]
+    if not times:
+        return None
+    text = open(os.path.join(case_dir, max(times, key=float), "U")).read()
+    body = text.split("internalField", 1)[1].split("(", 1)[1]
+    return [float(v.split()[0].lstrip("("))
+            for v in body.split("\n")[1:] if v.startswith("(")]
+
+
+def time_self_convergence(series):
+    """Order in time alone: RMS difference of the final u between runs at
+    successive halvings of dt on the same mesh (the spatial error cancels)."""
+    lines = []
+    for (case, variant), rs in sorted(series.items()):
+        if case != "timeStep":
+            continue
+        us = [(r["dt"], final_u(f"cases/{case}_{variant}_{r['cells']}_{r['dt']}"))
+              for r in rs]
+        diffs = []
+        for (dt1, u1), (dt2, u2) in zip(us, us[1:]):
+            if u1 is None or u2 is None:
+                continue
+            d = math.sqrt(sum((a - b) ** 2 for a, b in zip(u1, u2)) / len(u1))
+            diffs.append((f"{dt1} - {dt2}", d))
+        lines.append(f"{case} {variant} (time self-convergence, final u):")
+        for k, (label, d) in enumerate(diffs):
+            order = ""
+            if k > 0 and d > 0:
+                order = f"  order {math.log(diffs[k - 1][1] / d, 2):.2f}"
+            lines.append(f"  dt {label:>11}  RMS difference {d:.3e}{order}")
+    return lines
+
+
 def main(path):
     rows = list(csv.DictReader(open(path)))
     series = defaultdict(list)
@@ -37,6 +73,7 @@ def main(path):
             lines.append(f"  {key} {r[key]:>6}  L2(u) {e_u:.3e}  "
                          f"L2(Bxy) {e_b:.3e}  {r['seconds']} s{order}")
             prev = (h, e_u, e_b)
+    lines += time_self_convergence(series)
     open("orders.txt", "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 

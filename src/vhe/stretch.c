@@ -324,3 +324,93 @@ size_t vhe_bdonor_finish(size_t n, const double *V, const double *phis0,
     }
     return flushed;
 }
+
+
+/* Symmetric 3x3 from its 6 components (xx xy xz yy yz zz) and back. */
+static void sym_full(const double *s, double *A)
+{
+    A[0] = s[0]; A[1] = s[1]; A[2] = s[2];
+    A[3] = s[1]; A[4] = s[3]; A[5] = s[4];
+    A[6] = s[2]; A[7] = s[4]; A[8] = s[5];
+}
+
+size_t vhe_stretch_implicit(size_t n, double tau, const double *gradU,
+                            const double *Bhat, double *Bstar)
+{
+    static const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2},
+                                 {2, 2}};
+    size_t c, singular = 0;
+
+    for (c = 0; c < n; ++c) {
+        const double *g = gradU + 9 * c;
+        const double *bh = Bhat + 6 * c;
+        double *B = Bstar + 6 * c;
+        double L[9], M[6][7];
+        int p, q, k;
+
+        if (bh[0] == 0.0 && bh[1] == 0.0 && bh[2] == 0.0 && bh[3] == 0.0
+            && bh[4] == 0.0 && bh[5] == 0.0) {
+            for (k = 0; k < 6; ++k) B[k] = 0.0;
+            continue;
+        }
+        /* L = gradU^T (OpenFOAM's grad(U)(i,j) = d u_j/d x_i). */
+        for (p = 0; p < 3; ++p) {
+            for (q = 0; q < 3; ++q) L[3 * p + q] = g[3 * q + p];
+        }
+        /*
+         * Column q of the system matrix: E_q - tau (L E_q + E_q L^T), E_q
+         * the symmetric unit tensor of component q; last column Bhat.
+         */
+        for (q = 0; q < 6; ++q) {
+            double e[6] = {0, 0, 0, 0, 0, 0}, E[9], LE[9];
+            int i, j;
+
+            e[q] = 1.0;
+            sym_full(e, E);
+            mul3(L, E, LE);
+            for (p = 0; p < 6; ++p) {
+                i = ij[p][0];
+                j = ij[p][1];
+                /* (L E + E L^T)_ij = (L E)_ij + (L E)_ji */
+                M[p][q] = e[p] - tau * (LE[3 * i + j] + LE[3 * j + i]);
+            }
+        }
+        for (p = 0; p < 6; ++p) M[p][6] = bh[p];
+
+        /* Gaussian elimination with partial pivoting */
+        for (k = 0; k < 6; ++k) {
+            int piv = k;
+            double big = fabs(M[k][k]), f;
+
+            for (p = k + 1; p < 6; ++p) {
+                if (fabs(M[p][k]) > big) {
+                    big = fabs(M[p][k]);
+                    piv = p;
+                }
+            }
+            if (big < 1e-12) break;
+            if (piv != k) {
+                for (q = k; q < 7; ++q) {
+                    double t = M[k][q];
+                    M[k][q] = M[piv][q];
+                    M[piv][q] = t;
+                }
+            }
+            for (p = k + 1; p < 6; ++p) {
+                f = M[p][k] / M[k][k];
+                for (q = k; q < 7; ++q) M[p][q] -= f * M[k][q];
+            }
+        }
+        if (k < 6) {
+            ++singular;
+            for (q = 0; q < 6; ++q) B[q] = bh[q];
+            continue;
+        }
+        for (p = 5; p >= 0; --p) {
+            double sum = M[p][6];
+            for (q = p + 1; q < 6; ++q) sum -= M[p][q] * B[q];
+            B[p] = sum / M[p][p];
+        }
+    }
+    return singular;
+}

@@ -76,6 +76,20 @@ void vhe_expm3(const double A[9], double E[9]);
  */
 void vhe_stretch(size_t n, double dt, const double *gradU, double *Bstar);
 
+/*
+ * Implicit stretch of the second-order backward (BDF2) scheme: solves
+ *   B* - tau (L B* + B* L^T) = Bhat      per cell, L = gradU^T,
+ * tau = dt/(1 + dt/(dt + dt0)) (2 dt/3 at a constant step), Bhat the
+ * advected B* plus the BDF2 carry of the previous step's increment.  A 6x6
+ * linear solve per cell (Gaussian elimination, partial pivoting).  Cells
+ * with Bhat = 0 (pure fluid) stay 0.  Bhat and Bstar may alias.  Unlike
+ * vhe_stretch it is not a congruence: det and positivity hold to O(tau^3)
+ * per step only.  Returns the number of cells whose system was singular
+ * (left at Bhat).
+ */
+size_t vhe_stretch_implicit(size_t n, double tau, const double *gradU,
+                            const double *Bhat, double *Bstar);
+
 /* Sets B* to 0 where phis <= phis_min (pure fluid carries no deformation). */
 void vhe_clip_fluid(size_t n, const double *phis, double phis_min,
                     double *Bstar);

@@ -100,6 +100,11 @@ d=$(variant unknownElasticity); sed -i 's/^    pRefValue .*/&\n    elasticity im
 expectFatal unknownElasticity "$d" vheFoam "Unknown elasticity 'implicitish'" fvSolution
 d=$(variant negativeStabilisation); sed -i 's/^    pRefValue .*/&\n    elasticStabilisation -1;/' "$d/system/fvSolution"
 expectFatal negativeStabilisation "$d" vheFoam "elasticStabilisation must be >= 0" fvSolution
+d=$(variant unsupportedDdtScheme); setEntry "$d/system/fvSchemes" ddtSchemes/default CrankNicolson
+expectFatal unsupportedDdtScheme "$d" vheFoam "ddt\(rho,U\) scheme 'CrankNicolson' is not supported" fvSchemes
+d=$(variant backwardExplicit); setEntry "$d/system/fvSchemes" ddtSchemes/default backward
+sed -i 's/^    pRefValue .*/&\n    elasticity explicit;/' "$d/system/fvSolution"
+expectFatal backwardExplicit "$d" vheFoam "backward needs PIMPLE \{ elasticity semiImplicit; \}" fvSchemes
 
 # ---- vheFoam: constant/dynamicMeshDict (run-time refinement)
 # writeRefinement DIR FIELD FLUXES: a dynamicRefineFvMesh dictionary

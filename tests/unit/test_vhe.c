@@ -409,6 +409,100 @@ START_TEST(test_stretch_composition)
 }
 END_TEST
 
+START_TEST(test_stretch_implicit_shear_and_residual)
+{
+    /*
+     * Simple shear u_x = g y from Bhat = I: B_yy = 1, B_xy = tau g,
+     * B_xx = 1 + 2 (tau g)^2; a fluid cell (Bhat = 0) stays 0; and for a
+     * general L the solution satisfies B - tau (L B + B L^T) = Bhat.
+     */
+    const double g = 2.0, tau = 0.3;
+    double gradU[27], Bh[18], B[18];
+    int c;
+
+    memset(gradU, 0, sizeof gradU);
+    memset(Bh, 0, sizeof Bh);
+    gradU[3] = g;
+    Bh[0] = Bh[3] = Bh[5] = 1.0;
+    {
+        const double G2[9] = {0.2, -0.7, 0.1, 0.9, -0.4, 0.3, -0.2, 0.5, 0.35};
+        const double b[6] = {1.1, 0.1, 0.0, 0.9, -0.2, 1.4};
+        memcpy(gradU + 18, G2, sizeof G2);
+        memcpy(Bh + 12, b, sizeof b);
+    }
+    ck_assert_uint_eq(vhe_stretch_implicit(3, tau, gradU, Bh, B), 0);
+    {
+        const double X[6] = {1.0 + 2.0 * tau * g * tau * g, tau * g, 0.0,
+                             1.0, 0.0, 1.0};
+        ck_assert_msg(max_diff(B, X, 6) <= 1e-13, "shear: %g",
+                      max_diff(B, X, 6));
+    }
+    for (c = 0; c < 6; ++c) ck_assert(B[6 + c] == 0.0);
+    {
+        /* residual with L = gradU^T, full 3x3 products */
+        const double *g3 = gradU + 18, *b = B + 12;
+        const double Bf[9] = {b[0], b[1], b[2], b[1], b[3], b[4],
+                              b[2], b[4], b[5]};
+        static const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2},
+                                     {2, 2}};
+        double r = 0.0;
+        int p, k;
+        for (p = 0; p < 6; ++p) {
+            const int i = ij[p][0], j = ij[p][1];
+            double LB = 0.0;
+            for (k = 0; k < 3; ++k) {
+                /* L_ik = g3[3k + i]; (L B)_ij + (L B)_ji */
+                LB += g3[3 * k + i] * Bf[3 * k + j]
+                      + g3[3 * k + j] * Bf[3 * k + i];
+            }
+            r = fmax(r, fabs(Bf[3 * i + j] - tau * LB - Bh[12 + p]));
+        }
+        ck_assert_msg(r <= 1e-13, "residual %g", r);
+    }
+}
+END_TEST
+
+START_TEST(test_stretch_implicit_bdf2_order)
+{
+    /*
+     * dB/dt = L B + B L^T with constant L to T = 1 by BDF2 (implicit Euler
+     * first step, then tau = 2h/3 and the carry 1/3 of the last
+     * increment) against the exact stretch: halving h must cut the error
+     * about 4x (second order), where implicit Euler alone gives 2x.
+     */
+    const double gradU[9] = {0.2, -0.7, 0.1, 0.9, -0.4, 0.3, -0.2, 0.5, 0.35};
+    const double B0[6] = {1.1, 0.1, 0.0, 0.9, -0.2, 1.4};
+    double exact[6], err[2];
+    int level;
+
+    memcpy(exact, B0, sizeof exact);
+    vhe_stretch(1, 1.0, gradU, exact);
+    for (level = 0; level < 2; ++level) {
+        const int steps = 20 << level;
+        const double h = 1.0 / steps;
+        double B[6], D[6], Bh[6];
+        int k, q;
+
+        memcpy(B, B0, sizeof B);
+        memset(D, 0, sizeof D);
+        for (k = 0; k < steps; ++k) {
+            const double tau = k == 0 ? h : 2.0 * h / 3.0;
+            const double carry = k == 0 ? 0.0 : 1.0 / 3.0;
+            double Bn[6];
+            for (q = 0; q < 6; ++q) Bh[q] = B[q] + carry * D[q];
+            vhe_stretch_implicit(1, tau, gradU, Bh, Bn);
+            for (q = 0; q < 6; ++q) {
+                D[q] = Bn[q] - B[q];
+                B[q] = Bn[q];
+            }
+        }
+        err[level] = max_diff(B, exact, 6);
+    }
+    ck_assert_msg(err[0] / err[1] > 3.5 && err[0] / err[1] < 4.5,
+                  "errors %g %g ratio %g", err[0], err[1], err[0] / err[1]);
+}
+END_TEST
+
 START_TEST(test_clip_and_undeformed)
 {
     const double phis[3] = {0.25, 1e-9, 0.0};
@@ -546,6 +640,8 @@ static Suite *stretch_suite(void)
     tcase_add_test(tc, test_stretch_det_and_fluid);
     tcase_add_test(tc, test_stretch_huge_dt);
     tcase_add_test(tc, test_stretch_composition);
+    tcase_add_test(tc, test_stretch_implicit_shear_and_residual);
+    tcase_add_test(tc, test_stretch_implicit_bdf2_order);
     tcase_add_test(tc, test_clip_and_undeformed);
     tcase_add_test(tc, test_b_from_bstar);
     tcase_add_test(tc, test_bdonor);

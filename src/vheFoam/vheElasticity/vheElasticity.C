@@ -64,6 +64,7 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
         patchTypes(mesh_)
     ),
     semiImplicit_(true),
+    backward_(false),
     stabilisation_(0)
 {
     const dictionary& pimple = mesh_.solutionDict().subDict("PIMPLE");
@@ -86,7 +87,54 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
             << "elasticStabilisation must be >= 0, got " << stabilisation_
             << exit(FatalIOError);
     }
-    Info<< "Elastic stress: " << variant << endl;
+    // Time integration follows the momentum equation's: Euler, or the
+    // second-order backward (BDF2) scheme, whose stress of the new step
+    // needs B* of the new step to second order too (see stretch)
+    {
+        ITstream& is = mesh_.ddtScheme("ddt(rho,U)");
+        const word scheme(is);
+        if (scheme != "Euler" && scheme != "backward")
+        {
+            FatalIOErrorInFunction(mesh_.schemesDict())
+                << "ddt(rho,U) scheme '" << scheme << "' is not supported"
+                << " with elastic bodies" << nl
+                << "    Valid: (Euler backward)" << exit(FatalIOError);
+        }
+        backward_ = scheme == "backward";
+        if (backward_ && !semiImplicit_)
+        {
+            FatalIOErrorInFunction(mesh_.schemesDict())
+                << "ddt(rho,U) backward needs PIMPLE { elasticity"
+                << " semiImplicit; } in " << mesh_.solutionDict().name()
+                << " (an explicit stress is not second order in time)"
+                << exit(FatalIOError);
+        }
+    }
+    Info<< "Elastic stress: " << variant
+        << (backward_ ? ", second order in time (backward, BDF2)" : "")
+        << endl;
+    if (backward_)
+    {
+        // The increment of B* over the last step's stretch, carried by
+        // BDF2 into the next.  Not written: a restart restarts the history
+        // with a zero increment, as OpenFOAM's backward scheme does for U
+        // (its old-old field starts as a copy of the old one).
+        increment_.reset
+        (
+            new volSymmTensorField
+            (
+                IOobject
+                (
+                    "BstarIncrement", mesh_.time().timeName(), mesh_,
+                    IOobject::NO_READ, IOobject::NO_WRITE
+                ),
+                mesh_,
+                dimensionedSymmTensor(dimless, Zero),
+                patchTypes(mesh_)
+            )
+        );
+        increment_->oldTime();
+    }
 
     if (Bstar_.headerOk())
     {
@@ -204,11 +252,62 @@ void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
     // 2/3 tr(L) I), is then exactly the increment of the stretched B*.)
     volTensorField gradU(velocityGradient(U, deltaT));
     gradU.primitiveFieldRef() = dev(gradU.primitiveField());
-    vhe_stretch
+    if (!backward_)
+    {
+        vhe_stretch
+        (
+            mesh_.nCells(), deltaT, flat(gradU.primitiveField()),
+            flat(Bstar_.primitiveFieldRef())
+        );
+        return;
+    }
+    // BDF2: B* - tau (L B* + B* L^T) = B*_advected + carry x the last
+    // step's increment (the constant-step form: 3 B^(n+1) - 4 B^n +
+    // B^(n-1) = 2 dt (L B + B L^T)^(n+1), B^n here already advected)
+    const symmTensorField advected(Bstar_.primitiveField());
+    const symmTensorField Bhat(predictorBstar());
+    const size_t singular = vhe_stretch_implicit
     (
-        mesh_.nCells(), deltaT, flat(gradU.primitiveField()),
-        flat(Bstar_.primitiveFieldRef())
+        mesh_.nCells(), stressStep(deltaT), flat(gradU.primitiveField()),
+        flat(Bhat), flat(Bstar_.primitiveFieldRef())
     );
+    const label nSingular = returnReduce(label(singular), sumOp<label>());
+    if (nSingular)
+    {
+        WarningInFunction
+            << nSingular << " cells with a singular BDF2 stretch (velocity"
+            << " gradient x time step too large): B* kept" << endl;
+    }
+    increment_->primitiveFieldRef() = Bstar_.primitiveField() - advected;
+}
+
+
+Foam::scalar Foam::vheElasticity::stressStep(scalar deltaT) const
+{
+    // tau = deltaT/coefft of OpenFOAM's backward scheme, whose first step
+    // (time index < 2) is Euler
+    if (!backward_ || mesh_.time().timeIndex() < 2)
+    {
+        return deltaT;
+    }
+    const scalar deltaT0 = mesh_.time().deltaT0Value();
+    return deltaT/(1 + deltaT/(deltaT + deltaT0));
+}
+
+
+Foam::tmp<Foam::symmTensorField> Foam::vheElasticity::predictorBstar() const
+{
+    tmp<symmTensorField> tB(new symmTensorField(Bstar_.primitiveField()));
+    if (backward_ && mesh_.time().timeIndex() >= 2)
+    {
+        // coefft00/coefft of the backward scheme
+        const scalar dt = mesh_.time().deltaTValue();
+        const scalar dt0 = mesh_.time().deltaT0Value();
+        const scalar coefft = 1 + dt/(dt + dt0);
+        const scalar coefft00 = dt*dt/(dt0*(dt + dt0));
+        tB.ref() += (coefft00/coefft)*increment_->oldTime().primitiveField();
+    }
+    return tB;
 }
 
 
@@ -304,6 +403,8 @@ Foam::vheElasticity::faceVelocityCorrection
     const labelUList& nei = mesh_.neighbour();
     const scalarField& lw = mesh_.weights();
     const scalarField& dc = mesh_.deltaCoeffs();
+    symmTensorField sigOwn, sigNei;
+    interfaceSideStress(sig, sigOwn, sigNei);
     forAll(own, facei)
     {
         const label P = own[facei], N = nei[facei];
@@ -313,7 +414,8 @@ Foam::vheElasticity::faceVelocityCorrection
         const vector uLin = lw[facei]*U[P] + (1 - lw[facei])*U[N];
         const vector uCons =
         (
-            mP*U[P] + mN*U[N] + 0.5/dc[facei]*((sig[N] - sig[P]) & nf[facei])
+            mP*U[P] + mN*U[N]
+          + 0.5/dc[facei]*((sigNei[facei] - sigOwn[facei]) & nf[facei])
         )/(mP + mN);
         du[facei] += jump*(uCons - uLin);
     }
@@ -341,6 +443,105 @@ Foam::tmp<Foam::surfaceScalarField> Foam::vheElasticity::faceViscosity
 }
 
 
+void Foam::vheElasticity::interfaceSideStress
+(
+    const volSymmTensorField& sig,
+    symmTensorField& sigOwn,
+    symmTensorField& sigNei
+) const
+{
+    // At a face where phi_s jumps, the stress of the solid side is its
+    // value at the face, not at its cell centre: taking the cell-centre
+    // stress is an O(dx) traction error at the interface, which made the
+    // whole solution first order (oscillating Couette, interface on a
+    // face).  The solid side is extrapolated to the face with the
+    // least-squares gradient of the stress over its solid neighbours
+    // (phi_s >= 0.5), exact for linear stress, blended by the jump of
+    // phi_s; a cell with too few solid neighbours to fix a gradient keeps
+    // its cell-centre value.
+    const volScalarField& phis = mixture_.phis();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& C = mesh_.C().primitiveField();
+    const vectorField& Cf = mesh_.Cf().primitiveField();
+    const label nCells = mesh_.nCells();
+    const scalar solid = 0.5;
+
+    sigOwn = symmTensorField(sig.primitiveField(), own);
+    sigNei = symmTensorField(sig.primitiveField(), nei);
+
+    // Normal matrix M = sum w d d^T and right sides r_i = sum w d_i dsigma
+    symmTensorField M(nCells, Zero);
+    symmTensorField rx(nCells, Zero), ry(nCells, Zero), rz(nCells, Zero);
+    auto add = [&](label P, const vector& d, const symmTensor& ds)
+    {
+        const scalar w = 1/magSqr(d);
+        M[P] += w*sqr(d);
+        rx[P] += (w*d.x())*ds;
+        ry[P] += (w*d.y())*ds;
+        rz[P] += (w*d.z())*ds;
+    };
+    forAll(own, facei)
+    {
+        const label P = own[facei], N = nei[facei];
+        if (phis[P] < solid || phis[N] < solid) continue;
+        const vector d(C[N] - C[P]);
+        add(P, d, sig[N] - sig[P]);
+        add(N, -d, sig[P] - sig[N]);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (!p.coupled()) continue;
+        const labelUList& fc = p.faceCells();
+        const vectorField d(p.delta());
+        const scalarField phisN
+        (
+            phis.boundaryField()[patchi].patchNeighbourField()
+        );
+        const symmTensorField sigN
+        (
+            sig.boundaryField()[patchi].patchNeighbourField()
+        );
+        forAll(fc, i)
+        {
+            const label P = fc[i];
+            if (phis[P] < solid || phisN[i] < solid) continue;
+            add(P, d[i], sigN[i] - sig[P]);
+        }
+    }
+
+    // Gradient along (C_f - C_P) from cell P, or false if M is singular
+    const Vector<label> solD(mesh_.solutionD());
+    auto extrapolate = [&](label P, const vector& dx, symmTensor& s)
+    {
+        symmTensor m(M[P]);
+        const scalar scale = tr(m)/3;
+        if (scale <= 0) return;
+        // empty directions: no neighbours, no extrapolation
+        if (solD.x() < 0) { m.xx() = scale; m.xy() = m.xz() = 0; }
+        if (solD.y() < 0) { m.yy() = scale; m.xy() = m.yz() = 0; }
+        if (solD.z() < 0) { m.zz() = scale; m.xz() = m.yz() = 0; }
+        if (det(m) < 1e-6*pow3(scale)) return;
+        const vector a(inv(m) & dx);
+        s += a.x()*rx[P] + a.y()*ry[P] + a.z()*rz[P];
+    };
+    forAll(own, facei)
+    {
+        const label P = own[facei], N = nei[facei];
+        const scalar jump = phis[P] - phis[N];
+        if (mag(jump) < SMALL) continue;
+        // the solid side: the owner if its phi_s is higher
+        const label S = jump > 0 ? P : N;
+        if (phis[S] < solid) continue;
+        symmTensor& s = (S == P) ? sigOwn[facei] : sigNei[facei];
+        symmTensor ext(s);
+        extrapolate(S, Cf[facei] - C[S], ext);
+        s += mag(jump)*(ext - s);
+    }
+}
+
+
 Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
 (
     const volSymmTensorField& sig,
@@ -353,12 +554,29 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
     }
     // Each side's stress weighted by the other side's viscosity: the
     // traction that is continuous across a face between a solid and a
-    // fluid cell (the linear interpolation where the viscosities are equal)
+    // fluid cell (the linear interpolation where the viscosities are
+    // equal), with the solid side's stress taken at the face
     const volScalarField m
     (
         muEff + dimensionedScalar("small", muEff.dimensions(), ROOTVSMALL)
     );
-    return fvc::interpolate(sig/m)/fvc::interpolate(1/m);
+    tmp<surfaceSymmTensorField> tsf
+    (
+        fvc::interpolate(sig/m)/fvc::interpolate(1/m)
+    );
+    symmTensorField sigOwn, sigNei;
+    interfaceSideStress(sig, sigOwn, sigNei);
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& lw = mesh_.weights();
+    symmTensorField& sf = tsf.ref().primitiveFieldRef();
+    forAll(own, facei)
+    {
+        const scalar wP = lw[facei]/m[own[facei]];
+        const scalar wN = (1 - lw[facei])/m[nei[facei]];
+        sf[facei] = (wP*sigOwn[facei] + wN*sigNei[facei])/(wP + wN);
+    }
+    return tsf;
 }
 
 
@@ -407,6 +625,15 @@ void Foam::vheElasticity::clip()
 
 Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::sigma() const
 {
+    return stressOf(Bstar_.primitiveField());
+}
+
+
+Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::stressOf
+(
+    const symmTensorField& Bs
+) const
+{
     tmp<volSymmTensorField> tsigma
     (
         new volSymmTensorField
@@ -424,7 +651,7 @@ Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::sigma() const
     (
         mesh_.nCells(), mixture_.Ghat().primitiveField().cdata(),
         mixture_.phis().primitiveField().cdata(),
-        flat(Bstar_.primitiveField()), phisMin, flat(s.primitiveFieldRef())
+        flat(Bs), phisMin, flat(s.primitiveFieldRef())
     );
     s.correctBoundaryConditions();
     return tsigma;
@@ -441,7 +668,7 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
         new volScalarField
         (
             "muElastic",
-            dimensionedScalar("deltaT", dimTime, deltaT)
+            dimensionedScalar("deltaT", dimTime, stressStep(deltaT))
            *mixture_.Ghat()*mixture_.phis()
         )
     );
@@ -464,6 +691,7 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::gasFaceTranspose
         )
     );
     vectorField& source = tsource.ref().primitiveFieldRef();
+    const scalar tau = stressStep(deltaT);
 
     const scalarField& rho = mixture_.rho().primitiveField();
     const scalarField& phis = mixture_.phis().primitiveField();
@@ -477,8 +705,8 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::gasFaceTranspose
     forAll(own, facei)
     {
         const label P = own[facei], N = nei[facei];
-        const scalar muP = deltaT*Ghat[P]*phis[P];
-        const scalar muN = deltaT*Ghat[N]*phis[N];
+        const scalar muP = tau*Ghat[P]*phis[P];
+        const scalar muN = tau*Ghat[N]*phis[N];
         if (muP <= 0 && muN <= 0) continue;
         const scalar share = 1 - min(rho[P], rho[N])/max(rho[P], rho[N]);
         if (share <= 0) continue;
@@ -518,7 +746,7 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::gasFaceTranspose
         forAll(cells, i)
         {
             const label P = cells[i];
-            const scalar muP = deltaT*Ghat[P]*phis[P];
+            const scalar muP = tau*Ghat[P]*phis[P];
             if (muP <= 0 && muNs[i] <= 0) continue;
             const scalar share =
                 1 - min(rho[P], rhoN[i])/max(rho[P], rhoN[i]);
@@ -549,14 +777,45 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muEff
 
 Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma
 (
-    const volScalarField& muEff
+    const volVectorField& U,
+    const volScalarField& muEff,
+    scalar deltaT
 ) const
 {
+    tmp<volSymmTensorField> sig;
+    if (backward_)
+    {
+        // The stress of the new step's B*, B*^(n+1) = Bhat + tau (L B* +
+        // B* L^T): the part linear about phi_s^(1/2) I is the implicit
+        // viscosity muElastic, the rest, tau (L A + A L^T) with A = Bhat -
+        // phi_s^(1/2) I, is taken with the current velocity gradient (an
+        // O(dt^2) error per step, where linearising about I would leave
+        // O(dt) at finite strain)
+        symmTensorField Bs(predictorBstar());
+        const tensorField gradU
+        (
+            dev(velocityGradient(U, deltaT)().primitiveField())
+        );
+        const tensorField L(gradU.T());
+        const scalarField& phis = mixture_.phis().primitiveField();
+        const scalar tau = stressStep(deltaT);
+        forAll(Bs, celli)
+        {
+            if (phis[celli] <= mixture_.solidFractionMin()) continue;
+            const symmTensor A(Bs[celli] - sqrt(phis[celli])*I);
+            Bs[celli] += tau*twoSymm(L[celli] & A);
+        }
+        sig = stressOf(Bs);
+    }
+    else
+    {
+        sig = sigma();
+    }
     if (stabilisation_ <= 0)
     {
-        return fvc::div(sigma(), "div(sigma)");
+        return fvc::div(sig, "div(sigma)");
     }
-    return fvc::surfaceIntegrate(mesh_.Sf() & faceStress(sigma(), muEff));
+    return fvc::surfaceIntegrate(mesh_.Sf() & faceStress(sig(), muEff));
 }
 
 
