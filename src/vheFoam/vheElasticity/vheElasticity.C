@@ -295,6 +295,27 @@ Foam::scalar Foam::vheElasticity::stressStep(scalar deltaT) const
 }
 
 
+Foam::tmp<Foam::volVectorField> Foam::vheElasticity::explicitVelocity
+(
+    const volVectorField& U,
+    bool firstIter
+) const
+{
+    if (!backward_ || !firstIter || mesh_.time().timeIndex() < 2)
+    {
+        return U;
+    }
+    // U^n + dt/dt0 (U^n - U^(n-1)): second-order at the new time
+    const scalar ratio =
+        mesh_.time().deltaTValue()/mesh_.time().deltaT0Value();
+    const volVectorField& U0 = U.oldTime();
+    return tmp<volVectorField>
+    (
+        new volVectorField("Uexplicit", U0 + ratio*(U0 - U0.oldTime()))
+    );
+}
+
+
 Foam::tmp<Foam::symmTensorField> Foam::vheElasticity::predictorBstar() const
 {
     tmp<symmTensorField> tB(new symmTensorField(Bstar_.primitiveField()));
@@ -583,6 +604,7 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
 Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::stabilisation
 (
     const volVectorField& U,
+    const volVectorField& Uexplicit,
     const volTensorField& gradU,
     scalar deltaT
 ) const
@@ -593,7 +615,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::vheElasticity::stabilisation
         gradU
       + fvc::surfaceIntegrate
         (
-            mesh_.Sf()*faceVelocityCorrection(U, deltaT, false)
+            mesh_.Sf()*faceVelocityCorrection(Uexplicit, deltaT, false)
         )
     );
     // Compact minus wide Laplacian of U with the viscosity
