@@ -15,7 +15,7 @@ finish() { exit $((nfail > 0)); }
 
 # check NAME CONDITION(python expression) DETAILS
 check() {
-    if python3 -c "import sys; sys.exit(0 if ($2) else 1)"; then
+    if python3 -c "import math, sys; sys.exit(0 if ($2) else 1)"; then
         pass "$1" "$3"
     else
         fail "$1" "$3 (wanted $2)"
