@@ -282,16 +282,32 @@ void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
 }
 
 
-Foam::scalar Foam::vheElasticity::stressStep(scalar deltaT) const
+Foam::scalar Foam::vheElasticity::backwardCoefficients
+(
+    scalar& carry
+) const
 {
-    // tau = deltaT/coefft of OpenFOAM's backward scheme, whose first step
-    // (time index < 2) is Euler
+    // OpenFOAM's backward scheme, coefft B^(n+1) - coefft0 B^n + coefft00
+    // B^(n-1) = dt S^(n+1), as B^(n+1) - B^n = carry (B^n - B^(n-1)) +
+    // (dt/coefft) S^(n+1), carry = coefft00/coefft.  Its first step (time
+    // index < 2), and the Euler scheme: coefft 1, carry 0.
+    carry = 0;
     if (!backward_ || mesh_.time().timeIndex() < 2)
     {
-        return deltaT;
+        return 1;
     }
-    const scalar deltaT0 = mesh_.time().deltaT0Value();
-    return deltaT/(1 + deltaT/(deltaT + deltaT0));
+    const scalar dt = mesh_.time().deltaTValue();
+    const scalar dt0 = mesh_.time().deltaT0Value();
+    const scalar coefft = 1 + dt/(dt + dt0);
+    carry = dt*dt/(dt0*(dt + dt0))/coefft;
+    return coefft;
+}
+
+
+Foam::scalar Foam::vheElasticity::stressStep(scalar deltaT) const
+{
+    scalar carry;
+    return deltaT/backwardCoefficients(carry);
 }
 
 
@@ -319,14 +335,11 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::explicitVelocity
 Foam::tmp<Foam::symmTensorField> Foam::vheElasticity::predictorBstar() const
 {
     tmp<symmTensorField> tB(new symmTensorField(Bstar_.primitiveField()));
-    if (backward_ && mesh_.time().timeIndex() >= 2)
+    scalar carry;
+    backwardCoefficients(carry);
+    if (carry > 0)
     {
-        // coefft00/coefft of the backward scheme
-        const scalar dt = mesh_.time().deltaTValue();
-        const scalar dt0 = mesh_.time().deltaT0Value();
-        const scalar coefft = 1 + dt/(dt + dt0);
-        const scalar coefft00 = dt*dt/(dt0*(dt + dt0));
-        tB.ref() += (coefft00/coefft)*increment_->oldTime().primitiveField();
+        tB.ref() += carry*increment_->oldTime().primitiveField();
     }
     return tB;
 }
@@ -400,6 +413,8 @@ Foam::vheElasticity::faceVelocityCorrection
     //   traction continuous, as the face stress of divSigma does.
     const volSymmTensorField sig(sigma());
     const surfaceVectorField nf(mesh_.Sf()/mesh_.magSf());
+    symmTensorField sigOwn, sigNei;
+    interfaceSideStress(sig, sigOwn, sigNei);
 
     surfaceVectorField du
     (
@@ -409,7 +424,10 @@ Foam::vheElasticity::faceVelocityCorrection
     );
     if (bulk)
     {
-        const surfaceSymmTensorField sigf(faceStress(sig, muEff));
+        const surfaceSymmTensorField sigf
+        (
+            faceStress(sig, muEff, sigOwn, sigNei)
+        );
         const volVectorField divSig(fvc::surfaceIntegrate(mesh_.Sf() & sigf));
         const surfaceScalarField Zf(fvc::interpolate(impedance()));
         du =
@@ -424,8 +442,6 @@ Foam::vheElasticity::faceVelocityCorrection
     const labelUList& nei = mesh_.neighbour();
     const scalarField& lw = mesh_.weights();
     const scalarField& dc = mesh_.deltaCoeffs();
-    symmTensorField sigOwn, sigNei;
-    interfaceSideStress(sig, sigOwn, sigNei);
     forAll(own, facei)
     {
         const label P = own[facei], N = nei[facei];
@@ -574,6 +590,20 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
     {
         return fvc::interpolate(sig);
     }
+    symmTensorField sigOwn, sigNei;
+    interfaceSideStress(sig, sigOwn, sigNei);
+    return faceStress(sig, muEff, sigOwn, sigNei);
+}
+
+
+Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
+(
+    const volSymmTensorField& sig,
+    const volScalarField& muEff,
+    const symmTensorField& sigOwn,
+    const symmTensorField& sigNei
+) const
+{
     // Each side's stress weighted by the other side's viscosity: the
     // traction that is continuous across a face between a solid and a
     // fluid cell (the linear interpolation where the viscosities are
@@ -586,8 +616,6 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
     (
         fvc::interpolate(sig/m)/fvc::interpolate(1/m)
     );
-    symmTensorField sigOwn, sigNei;
-    interfaceSideStress(sig, sigOwn, sigNei);
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const scalarField& lw = mesh_.weights();
