@@ -32,8 +32,6 @@ plot 'results/cells_$name.dat' u 1:2 w steps lw 2 t 'dynamicRefineFvMesh'
 GP
 fi
 
-touch "$d/$name.foam"
-xvfb-run -a pvbatch ../common/renderPhases.py "$d/$name.foam" "results/scene_$name" \
-    alpha.air,phis 0 0.5 1 1.5 > "results/log.pvbatch.$name" 2>&1 \
-    || { echo "pvbatch failed: results/log.pvbatch.$name" >&2; exit 1; }
+vhe_pvbatch "results/log.pvbatch.$name" ../common/renderPhases.py "$d/$name.foam" \
+    "results/scene_$name" alpha.air,phis 0 0.5 1 1.5 || exit 1
 echo "Results in $(pwd)/results: $(cd results && ls ./*"$name"* | tr '\n' ' ')"

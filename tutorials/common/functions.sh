@@ -91,6 +91,17 @@ vhe_run_pool()
     return $failed
 }
 
+# vhe_pvbatch LOG SCRIPT FOAM ARG...: touches the ParaView stub FOAM and
+# runs SCRIPT FOAM ARG... in pvbatch under xvfb-run (no display needed),
+# its output in LOG; says where to look if it fails
+vhe_pvbatch()
+{
+    local log=$1 script=$2 foam=$3; shift 3
+    touch "$foam"
+    xvfb-run -a pvbatch "$script" "$foam" "$@" > "$log" 2>&1 \
+        || { echo "pvbatch failed: $log" >&2; return 1; }
+}
+
 # vhe_volume_drift DAT OUT: V(t)/V(0) - 1 for every column of a
 # volFieldValue volIntegrate output (the phase volumes) into OUT; prints
 # the largest drift

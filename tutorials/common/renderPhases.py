@@ -10,13 +10,16 @@ Writes OUTPREFIX_t<T>.png for each time.
   named "obstacle", and the mesh on the mid-plane y = const (shows the
   refinement of a dynamicRefineFvMesh case).
 """
+import os
 import sys
 
 from paraview.simple import (CellDatatoPointData, ColorBy, Contour,
-                             CreateView,
                              OpenFOAMReader, Outline, PythonCalculator,
                              SaveScreenshot, Show,
                              Slice, Text)
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from whiteView import white_view  # noqa: E402
 
 foam, prefix, fields = sys.argv[1:4]
 fields = fields.split(",")
@@ -35,14 +38,7 @@ available = list(reader.TimestepValues)
 xmin, xmax, ymin, ymax, zmin, zmax = reader.GetDataInformation().GetBounds()
 twoD = (zmax - zmin) < 0.05*(xmax - xmin)
 
-view = CreateView("RenderView")
-view.ViewSize = [1000, 800]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = white_view([1000, 800])
 
 if twoD:
     # each cell's colour: its phases' colours mixed by volume fraction,

@@ -25,9 +25,7 @@ GP
 for n in G10 G0.1; do
     d=cases/$n
     [ -d "$d" ] || continue
-    touch "$d/$n.foam"
-    xvfb-run -a pvbatch render.py "$d/$n.foam" "results/scene_$n" 0 0.5 1.5 2.0 \
-        > "results/log.pvbatch.$n" 2>&1 \
-        || { echo "pvbatch failed: results/log.pvbatch.$n" >&2; exit 1; }
+    vhe_pvbatch "results/log.pvbatch.$n" render.py "$d/$n.foam" "results/scene_$n" \
+        0 0.5 1.5 2.0 || exit 1
 done
 echo "Results in $(pwd)/results: $(cd results && ls ./*.csv ./*.dat ./*.png | tr '\n' ' ')"

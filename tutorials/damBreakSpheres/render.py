@@ -4,11 +4,16 @@ orange) of a dam-break case at the given times.
 Usage: pvbatch render.py CASE.foam OUTPREFIX T1 [T2 ...]
 Writes OUTPREFIX_t<T>.png for each time.
 """
+import os
 import sys
 
 from paraview.simple import (CellDatatoPointData, Contour,
-                             CreateView, OpenFOAMReader, Outline,
+                             OpenFOAMReader, Outline,
                              SaveScreenshot, Show, Text)
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "common"))
+from whiteView import white_view  # noqa: E402
 
 foam, prefix = sys.argv[1:3]
 times = [float(t) for t in sys.argv[3:]]
@@ -25,14 +30,7 @@ bodies = Contour(Input=points, ContourBy=["POINTS", "phis"],
                  Isosurfaces=[0.5])
 box = Outline(Input=reader)
 
-view = CreateView("RenderView")
-view.ViewSize = [1200, 700]
-view.OrientationAxesVisibility = 1
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = white_view([1200, 700], axes=True)
 
 s = Show(surface, view)
 s.ColorArrayName = ["POINTS", ""]

@@ -27,8 +27,6 @@ plot 'results/diskHeight.dat' u 1:2 w l lw 2 t 'vheFoam', \
      $interface w l dt 2 lw 2 t 'oil/water interface at rest'
 GP
 
-touch "$d/disk.foam"
-xvfb-run -a pvbatch ../common/renderPhases.py "$d/disk.foam" results/scene \
-    alpha.water,alpha.oil,alpha.block 0 1 2 5 > results/log.pvbatch 2>&1 \
-    || { echo "pvbatch failed: results/log.pvbatch" >&2; exit 1; }
+vhe_pvbatch results/log.pvbatch ../common/renderPhases.py "$d/disk.foam" results/scene \
+    alpha.water,alpha.oil,alpha.block 0 1 2 5 || exit 1
 echo "Results in $(pwd)/results: $(cd results && ls ./*.dat ./*.png | tr '\n' ' ')"

@@ -49,9 +49,7 @@ GP
 for d in cases/*/; do
     [ -f "$d/0/alpha.rubber" ] || continue
     n=$(basename "$d")
-    touch "$d/$n.foam"
-    xvfb-run -a pvbatch render.py "$d/$n.foam" "results/disks_$n.png" \
-        > "results/log.pvbatch.$n" 2>&1 \
-        || { echo "pvbatch failed: results/log.pvbatch.$n" >&2; exit 1; }
+    vhe_pvbatch "results/log.pvbatch.$n" render.py "$d/$n.foam" \
+        "results/disks_$n.png" || exit 1
 done
 echo "Results in $(pwd)/results: $(cd results && ls ./*.csv ./*.png | tr '\n' ' ')"

@@ -2,12 +2,17 @@
 
 Usage: pvbatch render.py CASE.foam OUT.png
 """
+import os
 import sys
 
 from paraview.simple import (CellDatatoPointData, ColorBy, Contour,
-                             CreateView, GetColorTransferFunction,
+                             GetColorTransferFunction,
                              GetScalarBar, OpenFOAMReader, SaveScreenshot,
                              Show, Slice, Text)
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "common"))
+from whiteView import white_view  # noqa: E402
 
 foam, out = sys.argv[1:3]
 reader = OpenFOAMReader(FileName=foam)
@@ -25,15 +30,8 @@ cut.SliceType.Normal = [0, 0, 1]
 points = CellDatatoPointData(Input=cut)
 edges = Contour(Input=points, ContourBy=["POINTS", "phis"], Isosurfaces=[0.5])
 
-view = CreateView("RenderView")
-view.ViewSize = [900, 900]
+view = white_view([900, 900])
 view.ViewTime = t
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
 
 shown = Show(cut, view)
 ColorBy(shown, ("CELLS", "vorticity", "Z"))

@@ -20,8 +20,6 @@ set ylabel 'V(t)/V(0) - 1'; set title 'Phase volumes: relative drift'
 plot for [k=2:3] 'results/volumeDrift.dat' u 1:k w l lw 2 t word("water air", k - 1)
 GP
 
-touch "$d/stairs.foam"
-xvfb-run -a pvbatch ../common/renderPhases.py "$d/stairs.foam" results/scene \
-    alpha.water 0 0.5 1 2 3 > results/log.pvbatch 2>&1 \
-    || { echo "pvbatch failed: results/log.pvbatch" >&2; exit 1; }
+vhe_pvbatch results/log.pvbatch ../common/renderPhases.py "$d/stairs.foam" results/scene \
+    alpha.water 0 0.5 1 2 3 || exit 1
 echo "Results in $(pwd)/results: $(cd results && ls ./*.dat ./*.png | tr '\n' ' ')"
