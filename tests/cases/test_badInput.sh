@@ -100,6 +100,8 @@ d=$(variant unknownElasticity); sed -i 's/^    pRefValue .*/&\n    elasticity im
 expectFatal unknownElasticity "$d" vheFoam "Unknown elasticity 'implicitish'" fvSolution
 d=$(variant negativeStabilisation); sed -i 's/^    pRefValue .*/&\n    elasticStabilisation -1;/' "$d/system/fvSolution"
 expectFatal negativeStabilisation "$d" vheFoam "elasticStabilisation must be >= 0" fvSolution
+d=$(variant badSecondOrderWalls); sed -i 's/^    pRefValue .*/&\n    secondOrderWalls maybe;/' "$d/system/fvSolution"
+expectFatal badSecondOrderWalls "$d" vheFoam "Expected 'true/false', 'on/off' ... found maybe" fvSolution.PIMPLE.secondOrderWalls
 d=$(variant unsupportedDdtScheme); setEntry "$d/system/fvSchemes" ddtSchemes/default CrankNicolson
 expectFatal unsupportedDdtScheme "$d" vheFoam "ddt\(rho,U\) scheme 'CrankNicolson' is not supported" fvSchemes
 d=$(variant backwardExplicit); setEntry "$d/system/fvSchemes" ddtSchemes/default backward

@@ -26,6 +26,7 @@ Description
 #include "profiling.H"
 #include "vheMixture.H"
 #include "vheElasticity.H"
+#include "wallShearCorrection.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
