@@ -44,6 +44,10 @@ def evaluate(case):
         alphaWorst = max(alphaWorst, -float(lo), float(hi) - 1)
     drift = max((max(abs(x / vs[0] - 1) for x in vs)
                  for vs in volumes.values() if vs[0] > 0), default=0.0)
+    # with detBCorrection, det B is 1 after every step: the error is what
+    # each step corrected (logged)
+    corrected = [float(x) for x in re.findall(
+        r"^detBCorrection: largest \|det B - 1\| corrected (\S+)", log, re.M)]
     minEig, detDrift, devB = math.inf, 0.0, 0.0
     total, balance, scale = [], [], 0.0
     diag = os.path.join(case, "postProcessing", "solidDiagnostics", "0",
@@ -82,6 +86,7 @@ def evaluate(case):
                 alphaExcursion=f"{alphaWorst:.2e}", volumeDrift=f"{drift:.2e}",
                 minEigBstar=f"{minEig:.2e}" if math.isfinite(minEig) else "",
                 maxDetDrift=f"{detDrift:.2e}", maxDevB=f"{devB:.3g}",
+                detCorrectedPerStep=f"{max(corrected):.1e}" if corrected else "",
                 energyGrowth=f"{growth:.1e}" if growth != "" else "",
                 balanceGain=f"{gain:.1e}" if gain != "" else "",
                 verdict="PASS" if not failed else "FAIL",
@@ -96,7 +101,8 @@ def main(cases, out):
         w.writeheader()
         w.writerows(rows)
     head = ("case", "steps", "seconds", "alphaExcursion", "volumeDrift",
-            "minEigBstar", "maxDetDrift", "maxDevB", "energyGrowth",
+            "minEigBstar", "maxDetDrift", "detCorrectedPerStep", "maxDevB",
+            "energyGrowth",
             "balanceGain", "verdict")
     widths = [max(len(h), *(len(str(r[h])) for r in rows)) for h in head]
     print("  ".join(h.ljust(n) for h, n in zip(head, widths)))

@@ -414,3 +414,40 @@ size_t vhe_stretch_implicit(size_t n, double tau, const double *gradU,
     }
     return singular;
 }
+
+double vhe_isochoric(size_t n, const double *phis, double phis_min,
+                     double phis_solid, int empty, double *Bstar)
+{
+    /* symmTensor components xx xy xz yy yz zz; row/column of each */
+    static const int row[6] = {0, 0, 0, 1, 1, 2};
+    static const int col[6] = {0, 1, 2, 1, 2, 2};
+    double worst = 0.0;
+    size_t c;
+    int k;
+
+    for (c = 0; c < n; ++c) {
+        double *Bs = Bstar + 6 * c;
+        double B[6], J, s;
+        if (!(phis[c] > phis_min)) {
+            continue;
+        }
+        /* det(B*) = phi_s^(3/2) det(B): work on B, which is O(1) */
+        for (k = 0; k < 6; ++k) {
+            B[k] = Bs[k] / sqrt(phis[c]);
+        }
+        J = vhe_sym_det(B);
+        if (!(J > 0.0)) {
+            continue;
+        }
+        if (phis[c] > phis_solid && fabs(J - 1.0) > worst) {
+            worst = fabs(J - 1.0);
+        }
+        s = empty < 0 ? pow(J, -1.0 / 3.0) : 1.0 / sqrt(J);
+        for (k = 0; k < 6; ++k) {
+            if (empty < 0 || (row[k] != empty && col[k] != empty)) {
+                Bs[k] *= s;
+            }
+        }
+    }
+    return worst;
+}

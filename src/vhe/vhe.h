@@ -155,6 +155,21 @@ void vhe_solid_diagnostics(size_t n, const double *phis, const double *Bstar,
                            double phis_solid, double out[3]);
 
 /*
+ * Isochoric correction of B (an option of the case, never silent): in
+ * cells with phis > phis_min and det(B) > 0, B = B* / phi_s^(1/2) is
+ * scaled to det(B) = 1, the exact value for the incompressible solid that
+ * the donor-cell advection of B (averaging B of neighbouring cells; det is
+ * not linear) does not keep.  empty = -1 (3D): B <- B det(B)^(-1/3);
+ * empty = 0, 1 or 2 (2D, that direction empty): the in-plane block is
+ * scaled by det(B)^(-1/2) and the empty direction's components are kept
+ * (plane strain).  Returns the largest |det(B) - 1| before the correction
+ * over the cells with phis > phis_solid (as vhe_solid_diagnostics; 0 if
+ * there is none).
+ */
+double vhe_isochoric(size_t n, const double *phis, double phis_min,
+                     double phis_solid, int empty, double *Bstar);
+
+/*
  * Repairs B* in place where it is not positive definite: eigenvalues below
  * lambda_min phi_s^(1/2) are raised to it.  Returns the number of cells
  * changed.  Used only when the case asks for it (never silent).

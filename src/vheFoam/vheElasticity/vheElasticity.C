@@ -65,6 +65,7 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
     ),
     semiImplicit_(true),
     backward_(false),
+    detCorrection_(false),
     stabilisation_(0)
 {
     const dictionary& pimple = mesh_.solutionDict().subDict("PIMPLE");
@@ -110,8 +111,12 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
                 << exit(FatalIOError);
         }
     }
+    // Opt-in isochoric correction of B after each step's update (DESIGN:
+    // any det(B) correction is an option, never silent)
+    detCorrection_ = pimple.getOrDefault<Switch>("detBCorrection", false);
     Info<< "Elastic stress: " << variant
         << (backward_ ? ", second order in time (backward, BDF2)" : "")
+        << (detCorrection_ ? "; B scaled to det B = 1 (detBCorrection)" : "")
         << endl;
     if (backward_)
     {
@@ -699,6 +704,29 @@ void Foam::vheElasticity::clip()
         mesh_.nCells(), mixture_.phis().primitiveField().cdata(),
         mixture_.solidFractionMin(), flat(Bstar_.primitiveFieldRef())
     );
+    if (detCorrection_)
+    {
+        // empty direction of a 2D case (plane strain: its B component
+        // stays), -1 in 3D
+        const Vector<label> solD(mesh_.solutionD());
+        int empty = -1;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (solD[d] < 0) empty = d;
+        }
+        const scalar corrected = returnReduce
+        (
+            vhe_isochoric
+            (
+                mesh_.nCells(), mixture_.phis().primitiveField().cdata(),
+                mixture_.solidFractionMin(), 0.5, empty,
+                flat(Bstar_.primitiveFieldRef())
+            ),
+            maxOp<scalar>()
+        );
+        Info<< "detBCorrection: largest |det B - 1| corrected " << corrected
+            << " (cells with phi_s > 0.5)" << endl;
+    }
     Bstar_.correctBoundaryConditions();
 }
 
