@@ -373,7 +373,12 @@ Foam::tmp<Foam::volTensorField> Foam::vheElasticity::velocityGradient
         Uf += faceVelocityCorrection(U, deltaT, true);
     }
     const surfaceScalarField& phi = mixture_.phi();
-    auto toFlux = [](vectorField& uf, const vectorField& Sf, const scalarField& phif)
+    auto toFlux = []
+    (
+        vectorField& uf,
+        const vectorField& Sf,
+        const scalarField& phif
+    )
     {
         forAll(uf, facei)
         {
