@@ -452,7 +452,8 @@ Foam::vheElasticity::faceVelocityCorrection
     //   traction continuous, as the face stress of divSigma does.
     const volSymmTensorField sig(sigma());
     const surfaceVectorField nf(mesh_.Sf()/mesh_.magSf());
-    symmTensorField sigOwn, sigNei;
+    surfaceSymmTensorField sigOwn(fvc::interpolate(sig));
+    surfaceSymmTensorField sigNei(sigOwn);
     interfaceSideStress(sig, sigOwn, sigNei);
 
     surfaceVectorField du
@@ -495,6 +496,40 @@ Foam::vheElasticity::faceVelocityCorrection
         )/(mP + mN);
         du[facei] += jump*(uCons - uLin);
     }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (!p.coupled()) continue;
+        const labelUList& fc = p.faceCells();
+        const scalarField& w = p.weights();
+        const scalarField& pdc = p.deltaCoeffs();
+        const vectorField n(p.nf());
+        const scalarField phisN
+        (
+            phis.boundaryField()[patchi].patchNeighbourField()
+        );
+        const scalarField mN
+        (
+            muEff.boundaryField()[patchi].patchNeighbourField()
+        );
+        const vectorField UN(U.boundaryField()[patchi].patchNeighbourField());
+        const symmTensorField& sO = sigOwn.boundaryField()[patchi];
+        const symmTensorField& sN = sigNei.boundaryField()[patchi];
+        vectorField& dub = du.boundaryFieldRef()[patchi];
+        forAll(fc, i)
+        {
+            const label P = fc[i];
+            const scalar jump = mag(phis[P] - phisN[i]);
+            if (jump < SMALL) continue;
+            const scalar mP = muEff[P] + ROOTVSMALL, mNi = mN[i] + ROOTVSMALL;
+            const vector uLin = w[i]*U[P] + (1 - w[i])*UN[i];
+            const vector uCons =
+            (
+                mP*U[P] + mNi*UN[i] + 0.5/pdc[i]*((sN[i] - sO[i]) & n[i])
+            )/(mP + mNi);
+            dub[i] += jump*(uCons - uLin);
+        }
+    }
     return tmp<surfaceVectorField>(new surfaceVectorField(du));
 }
 
@@ -522,20 +557,20 @@ Foam::tmp<Foam::surfaceScalarField> Foam::vheElasticity::faceViscosity
 void Foam::vheElasticity::interfaceSideStress
 (
     const volSymmTensorField& sig,
-    symmTensorField& sigOwn,
-    symmTensorField& sigNei
+    surfaceSymmTensorField& sigOwn,
+    surfaceSymmTensorField& sigNei
 ) const
 {
     // At a face where phi_s jumps, the stress of the solid side is its
     // value at the face, not at its cell centre: taking the cell-centre
     // stress is an O(dx) traction error at the interface (removing it
-    // cut the oscillating Couette error 1.4-1.7x; the order with the
-    // interface on a face stays about 1, README: Verification).  The
-    // solid side is extrapolated to the face with the
-    // least-squares gradient of the stress over its solid neighbours
-    // (phi_s >= 0.5), exact for linear stress, blended by the jump of
-    // phi_s; a cell with too few solid neighbours to fix a gradient keeps
-    // its cell-centre value.
+    // cut the oscillating Couette error 1.4-1.7x).  The solid side is
+    // extrapolated to the face with the least-squares gradient of the
+    // stress over its solid neighbours (phi_s >= 0.5), exact for linear
+    // stress, blended by the jump of phi_s; a cell with too few solid
+    // neighbours to fix a gradient keeps its cell-centre value.  On a
+    // coupled patch (processor, cyclic) "own" is this side, "nei" the
+    // other, whose gradient comes across with the patch.
     const volScalarField& phis = mixture_.phis();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
@@ -543,9 +578,6 @@ void Foam::vheElasticity::interfaceSideStress
     const vectorField& Cf = mesh_.Cf().primitiveField();
     const label nCells = mesh_.nCells();
     const scalar solid = 0.5;
-
-    sigOwn = symmTensorField(sig.primitiveField(), own);
-    sigNei = symmTensorField(sig.primitiveField(), nei);
 
     // Normal matrix M = sum w d d^T and right sides r_i = sum w d_i dsigma
     symmTensorField M(nCells, Zero);
@@ -588,21 +620,63 @@ void Foam::vheElasticity::interfaceSideStress
         }
     }
 
-    // Gradient along (C_f - C_P) from cell P, or false if M is singular
+    // The least-squares gradient of sig along x, y and z per cell (zero
+    // where M is singular), with coupled patches for the other side's
     const Vector<label> solD(mesh_.solutionD());
-    auto extrapolate = [&](label P, const vector& dx, symmTensor& s)
+    PtrList<volSymmTensorField> g(3);
+    forAll(g, d)
+    {
+        g.set
+        (
+            d,
+            new volSymmTensorField
+            (
+                IOobject
+                (
+                    "sigmaGrad" + Foam::name(d), mesh_.time().timeName(), mesh_
+                ),
+                mesh_,
+                dimensionedSymmTensor(dimPressure/dimLength, Zero),
+                patchTypes(mesh_)
+            )
+        );
+    }
+    forAll(M, P)
     {
         symmTensor m(M[P]);
         const scalar scale = tr(m)/3;
-        if (scale <= 0) return;
+        if (scale <= 0) continue;
         // empty directions: no neighbours, no extrapolation
         if (solD.x() < 0) { m.xx() = scale; m.xy() = m.xz() = 0; }
         if (solD.y() < 0) { m.yy() = scale; m.xy() = m.yz() = 0; }
         if (solD.z() < 0) { m.zz() = scale; m.xz() = m.yz() = 0; }
-        if (det(m) < 1e-6*pow3(scale)) return;
-        const vector a(inv(m) & dx);
-        s += a.x()*rx[P] + a.y()*ry[P] + a.z()*rz[P];
+        if (det(m) < 1e-6*pow3(scale)) continue;
+        const symmTensor iM(inv(m));
+        g[0][P] = iM.xx()*rx[P] + iM.xy()*ry[P] + iM.xz()*rz[P];
+        g[1][P] = iM.xy()*rx[P] + iM.yy()*ry[P] + iM.yz()*rz[P];
+        g[2][P] = iM.xz()*rx[P] + iM.yz()*ry[P] + iM.zz()*rz[P];
+    }
+    forAll(g, d)
+    {
+        g[d].correctBoundaryConditions();
+    }
+    // sig extrapolated from cell P by dx with gradients gP
+    auto extrapolated = []
+    (
+        const symmTensor& s,
+        const symmTensor& g0,
+        const symmTensor& g1,
+        const symmTensor& g2,
+        const vector& dx
+    )
+    {
+        return symmTensor(dx.x()*g0 + dx.y()*g1 + dx.z()*g2) + s;
     };
+
+    sigOwn = fvc::interpolate(sig);
+    sigNei = fvc::interpolate(sig);
+    sigOwn.primitiveFieldRef() = symmTensorField(sig.primitiveField(), own);
+    sigNei.primitiveFieldRef() = symmTensorField(sig.primitiveField(), nei);
     forAll(own, facei)
     {
         const label P = own[facei], N = nei[facei];
@@ -612,9 +686,49 @@ void Foam::vheElasticity::interfaceSideStress
         const label S = jump > 0 ? P : N;
         if (phis[S] < solid) continue;
         symmTensor& s = (S == P) ? sigOwn[facei] : sigNei[facei];
-        symmTensor ext(s);
-        extrapolate(S, Cf[facei] - C[S], ext);
-        s += mag(jump)*(ext - s);
+        const vector dS(Cf[facei] - C[S]);
+        s = (1 - mag(jump))*s
+          + mag(jump)*extrapolated(s, g[0][S], g[1][S], g[2][S], dS);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (!p.coupled()) continue;
+        const labelUList& fc = p.faceCells();
+        const vectorField dP(p.Cf() - p.Cn());
+        const vectorField dN(dP - p.delta());
+        const scalarField phisN
+        (
+            phis.boundaryField()[patchi].patchNeighbourField()
+        );
+        symmTensorField& sO = sigOwn.boundaryFieldRef()[patchi];
+        symmTensorField& sN = sigNei.boundaryFieldRef()[patchi];
+        sO = sig.boundaryField()[patchi].patchInternalField();
+        sN = sig.boundaryField()[patchi].patchNeighbourField();
+        // the other side's gradients
+        PtrList<symmTensorField> gN(3);
+        forAll(gN, d)
+        {
+            gN.set(d, g[d].boundaryField()[patchi].patchNeighbourField());
+        }
+        forAll(fc, i)
+        {
+            const label P = fc[i];
+            const scalar jump = phis[P] - phisN[i];
+            if (mag(jump) < SMALL) continue;
+            if (jump > 0 && phis[P] >= solid)
+            {
+                sO[i] = (1 - mag(jump))*sO[i]
+                  + mag(jump)
+                   *extrapolated(sO[i], g[0][P], g[1][P], g[2][P], dP[i]);
+            }
+            else if (jump < 0 && phisN[i] >= solid)
+            {
+                sN[i] = (1 - mag(jump))*sN[i]
+                  + mag(jump)
+                   *extrapolated(sN[i], gN[0][i], gN[1][i], gN[2][i], dN[i]);
+            }
+        }
     }
 }
 
@@ -629,7 +743,8 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
     {
         return fvc::interpolate(sig);
     }
-    symmTensorField sigOwn, sigNei;
+    surfaceSymmTensorField sigOwn(fvc::interpolate(sig));
+    surfaceSymmTensorField sigNei(sigOwn);
     interfaceSideStress(sig, sigOwn, sigNei);
     return faceStress(sig, muEff, sigOwn, sigNei);
 }
@@ -639,8 +754,8 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
 (
     const volSymmTensorField& sig,
     const volScalarField& muEff,
-    const symmTensorField& sigOwn,
-    const symmTensorField& sigNei
+    const surfaceSymmTensorField& sigOwn,
+    const surfaceSymmTensorField& sigNei
 ) const
 {
     // Each side's stress weighted by the other side's viscosity: the
@@ -664,6 +779,22 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
         const scalar wP = lw[facei]/m[own[facei]];
         const scalar wN = (1 - lw[facei])/m[nei[facei]];
         sf[facei] = (wP*sigOwn[facei] + wN*sigNei[facei])/(wP + wN);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (!p.coupled()) continue;
+        const scalarField& w = p.weights();
+        const scalarField mP(m.boundaryField()[patchi].patchInternalField());
+        const scalarField mN(m.boundaryField()[patchi].patchNeighbourField());
+        const symmTensorField& sO = sigOwn.boundaryField()[patchi];
+        const symmTensorField& sN = sigNei.boundaryField()[patchi];
+        symmTensorField& sb = tsf.ref().boundaryFieldRef()[patchi];
+        forAll(sb, i)
+        {
+            const scalar wP = w[i]/mP[i], wN = (1 - w[i])/mN[i];
+            sb[i] = (wP*sO[i] + wN*sN[i])/(wP + wN);
+        }
     }
     return tsf;
 }
