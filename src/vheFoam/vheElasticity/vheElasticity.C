@@ -482,19 +482,31 @@ Foam::vheElasticity::faceVelocityCorrection
     const labelUList& nei = mesh_.neighbour();
     const scalarField& lw = mesh_.weights();
     const scalarField& dc = mesh_.deltaCoeffs();
+    // The traction-continuous face velocity minus the linear one, from
+    // the two sides' velocities, viscosities and stresses
+    auto consistentMinusLinear = []
+    (
+        scalar w, scalar dcf, const vector& n,
+        const vector& UP, const vector& UN,
+        scalar muP, scalar muN,
+        const symmTensor& sP, const symmTensor& sN
+    )
+    {
+        const scalar mP = muP + ROOTVSMALL, mN = muN + ROOTVSMALL;
+        const vector uCons =
+            (mP*UP + mN*UN + 0.5/dcf*((sN - sP) & n))/(mP + mN);
+        return vector(uCons - (w*UP + (1 - w)*UN));
+    };
     forAll(own, facei)
     {
         const label P = own[facei], N = nei[facei];
         const scalar jump = mag(phis[P] - phis[N]);
         if (jump < SMALL) continue;
-        const scalar mP = muEff[P] + ROOTVSMALL, mN = muEff[N] + ROOTVSMALL;
-        const vector uLin = lw[facei]*U[P] + (1 - lw[facei])*U[N];
-        const vector uCons =
+        du[facei] += jump*consistentMinusLinear
         (
-            mP*U[P] + mN*U[N]
-          + 0.5/dc[facei]*((sigNei[facei] - sigOwn[facei]) & nf[facei])
-        )/(mP + mN);
-        du[facei] += jump*(uCons - uLin);
+            lw[facei], dc[facei], nf[facei], U[P], U[N], muEff[P], muEff[N],
+            sigOwn[facei], sigNei[facei]
+        );
     }
     forAll(mesh_.boundary(), patchi)
     {
@@ -521,13 +533,10 @@ Foam::vheElasticity::faceVelocityCorrection
             const label P = fc[i];
             const scalar jump = mag(phis[P] - phisN[i]);
             if (jump < SMALL) continue;
-            const scalar mP = muEff[P] + ROOTVSMALL, mNi = mN[i] + ROOTVSMALL;
-            const vector uLin = w[i]*U[P] + (1 - w[i])*UN[i];
-            const vector uCons =
+            dub[i] += jump*consistentMinusLinear
             (
-                mP*U[P] + mNi*UN[i] + 0.5/pdc[i]*((sN[i] - sO[i]) & n[i])
-            )/(mP + mNi);
-            dub[i] += jump*(uCons - uLin);
+                w[i], pdc[i], n[i], U[P], UN[i], muEff[P], mN[i], sO[i], sN[i]
+            );
         }
     }
     return tmp<surfaceVectorField>(new surfaceVectorField(du));
@@ -660,21 +669,18 @@ void Foam::vheElasticity::interfaceSideStress
     {
         g[d].correctBoundaryConditions();
     }
-    // sig extrapolated from cell P by dx with gradients gP
-    auto extrapolated = []
+    // The change of sig over dx with the gradients g0, g1, g2 along x, y, z
+    auto along = []
     (
-        const symmTensor& s,
         const symmTensor& g0,
         const symmTensor& g1,
         const symmTensor& g2,
         const vector& dx
     )
     {
-        return symmTensor(dx.x()*g0 + dx.y()*g1 + dx.z()*g2) + s;
+        return symmTensor(dx.x()*g0 + dx.y()*g1 + dx.z()*g2);
     };
 
-    sigOwn = fvc::interpolate(sig);
-    sigNei = fvc::interpolate(sig);
     sigOwn.primitiveFieldRef() = symmTensorField(sig.primitiveField(), own);
     sigNei.primitiveFieldRef() = symmTensorField(sig.primitiveField(), nei);
     forAll(own, facei)
@@ -686,9 +692,7 @@ void Foam::vheElasticity::interfaceSideStress
         const label S = jump > 0 ? P : N;
         if (phis[S] < solid) continue;
         symmTensor& s = (S == P) ? sigOwn[facei] : sigNei[facei];
-        const vector dS(Cf[facei] - C[S]);
-        s = (1 - mag(jump))*s
-          + mag(jump)*extrapolated(s, g[0][S], g[1][S], g[2][S], dS);
+        s += mag(jump)*along(g[0][S], g[1][S], g[2][S], Cf[facei] - C[S]);
     }
     forAll(mesh_.boundary(), patchi)
     {
@@ -718,15 +722,11 @@ void Foam::vheElasticity::interfaceSideStress
             if (mag(jump) < SMALL) continue;
             if (jump > 0 && phis[P] >= solid)
             {
-                sO[i] = (1 - mag(jump))*sO[i]
-                  + mag(jump)
-                   *extrapolated(sO[i], g[0][P], g[1][P], g[2][P], dP[i]);
+                sO[i] += mag(jump)*along(g[0][P], g[1][P], g[2][P], dP[i]);
             }
             else if (jump < 0 && phisN[i] >= solid)
             {
-                sN[i] = (1 - mag(jump))*sN[i]
-                  + mag(jump)
-                   *extrapolated(sN[i], gN[0][i], gN[1][i], gN[2][i], dN[i]);
+                sN[i] += mag(jump)*along(gN[0][i], gN[1][i], gN[2][i], dN[i]);
             }
         }
     }
@@ -773,12 +773,25 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const scalarField& lw = mesh_.weights();
+    // each side's stress weighted by (its interpolation weight)/(its
+    // viscosity)
+    auto weighted = []
+    (
+        scalar w, scalar mP, scalar mN,
+        const symmTensor& sP, const symmTensor& sN
+    )
+    {
+        const scalar wP = w/mP, wN = (1 - w)/mN;
+        return symmTensor((wP*sP + wN*sN)/(wP + wN));
+    };
     symmTensorField& sf = tsf.ref().primitiveFieldRef();
     forAll(own, facei)
     {
-        const scalar wP = lw[facei]/m[own[facei]];
-        const scalar wN = (1 - lw[facei])/m[nei[facei]];
-        sf[facei] = (wP*sigOwn[facei] + wN*sigNei[facei])/(wP + wN);
+        sf[facei] = weighted
+        (
+            lw[facei], m[own[facei]], m[nei[facei]],
+            sigOwn[facei], sigNei[facei]
+        );
     }
     forAll(mesh_.boundary(), patchi)
     {
@@ -792,8 +805,7 @@ Foam::tmp<Foam::surfaceSymmTensorField> Foam::vheElasticity::faceStress
         symmTensorField& sb = tsf.ref().boundaryFieldRef()[patchi];
         forAll(sb, i)
         {
-            const scalar wP = w[i]/mP[i], wN = (1 - w[i])/mN[i];
-            sb[i] = (wP*sO[i] + wN*sN[i])/(wP + wN);
+            sb[i] = weighted(w[i], mP[i], mN[i], sO[i], sN[i]);
         }
     }
     return tsf;
