@@ -247,8 +247,9 @@ void vhe_solid_diagnostics(size_t n, const double *phis, const double *Bstar,
 /*
  * Cyclic Jacobi eigen-decomposition of a symmetric 3x3 matrix A (row-major,
  * destroyed; its diagonal ends as the eigenvalues), V receives the
- * eigenvectors as columns.  Slow but unconditionally robust: used only by
- * the (rare, opt-in) repair.
+ * eigenvectors as columns.  Unconditionally robust, converges
+ * quadratically (a few sweeps); its eigenvectors are orthonormal to
+ * round-off, which the matrix log and exp of B need.
  */
 static void jacobi3(double *A, double *V)
 {
@@ -296,6 +297,17 @@ static void jacobi3(double *A, double *V)
             }
         }
     }
+}
+
+void vhe_sym_eigen(const double S[6], double lambda[3], double V[9])
+{
+    double A[9];
+
+    A[0] = S[0]; A[1] = S[1]; A[2] = S[2];
+    A[3] = S[1]; A[4] = S[3]; A[5] = S[4];
+    A[6] = S[2]; A[7] = S[4]; A[8] = S[5];
+    jacobi3(A, V);
+    lambda[0] = A[0]; lambda[1] = A[4]; lambda[2] = A[8];
 }
 
 size_t vhe_spd_repair(size_t n, const double *phis, double lambda_min,

@@ -132,6 +132,120 @@ size_t vhe_bdonor_finish(size_t n, const double *V, const double *phis0,
                          const double *out, const double *W, const double *S,
                          double phis_min, double *Bstar);
 
+/* --------------------------------------------- log-conformation of B */
+
+/*
+ * The deformation is carried as Psi = log B (logb.c).  For the
+ * incompressible solid tr Psi = log det B = 0; every kernel below is
+ * linear in Psi with one coefficient for all six components, so a
+ * trace-free Psi stays trace-free and B = exp(Psi) has det B = 1 and is
+ * symmetric positive definite by construction.
+ *
+ * vhe_sym_eigen: eigenvalues (unordered) and orthonormal eigenvectors
+ * (columns of V, row-major) of a symmTensor, cyclic Jacobi.
+ * vhe_sym_log: L = log S for S symmetric positive definite; eigenvalues
+ * below DBL_MIN are taken as DBL_MIN, and the number of such is returned
+ * (0 for a valid S).  vhe_sym_exp: E = exp S, any symmetric S.
+ */
+void vhe_sym_eigen(const double S[6], double lambda[3], double V[9]);
+int vhe_sym_log(const double S[6], double L[6]);
+void vhe_sym_exp(const double S[6], double E[6]);
+
+/*
+ * Psi = log(B* / phi_s^(1/2)) where phis > phis_min, else 0 (B = I, the
+ * neutral value a cell without solid lends to a vanishing solid flux).
+ * Returns the number of cells whose B* was not positive definite.
+ * vhe_bstar_from_logb is the inverse: B* = phi_s^(1/2) exp(Psi) where
+ * phis > phis_min, else 0.
+ */
+size_t vhe_logb_from_bstar(size_t n, const double *phis, const double *Bstar,
+                           double phis_min, double *Psi);
+void vhe_bstar_from_logb(size_t n, const double *phis, const double *Psi,
+                         double phis_min, double *Bstar);
+
+/*
+ * Bounded second-order conservative transport of a symmTensor X per unit
+ * solid volume (X = Psi) with the solid volume a[f] crossing each face
+ * over the step (flux-corrected transport, Zalesak 1979):
+ *
+ * 1. Low order: vhe_bdonor_internal/boundary (above) with X in place of B,
+ *    then vhe_donor_finish gives per cell the solid content
+ *    m = max(phis0 V - out, 0) + W [m^3] and the donor-cell X, a convex
+ *    combination of old X values (m = 0, X = 0 where phis <= phis_min).
+ *    Returns the number of solid cells whose old content left entirely.
+ * 2. Gradient of the old X, masked: G[c] (18 per cell, d/dx d/dy d/dz of
+ *    the 6 components) = sum over faces whose both cells have
+ *    phis > phis_grad of S_f (X_f - X_c), X_f linear (weight w of the
+ *    owner); divide by the cell volume afterwards.  Cells with little
+ *    solid take no part: their X is bounded but not smooth.  G starts at
+ *    0.  Boundary: X_nb, phis_nb the coupled neighbour's values (pass
+ *    phis_nb = 0 for other boundaries, which then add nothing).
+ * 3. Antidiffusive flux A[f] (6 per face, [m^3]) = a (X_f - X_up), the
+ *    MUSCL-Hancock face value X_f = X_up + (x_f - x_up - dt/2 U_up) . G_up
+ *    (second order in space and time, upwind cell up), positive from the
+ *    owner to the neighbour.  Boundary: delta = x_nb - x_owner, U_nb, G_nb
+ *    the neighbour's (coupled patches; pass a = 0 elsewhere).
+ * 4. Limiter: local extrema of the old and low-order X over each cell
+ *    and its face neighbours (vhe_fct_extrema_init, then _internal and
+ *    _boundary with Emin/Emax the cells' own extrema from init: a cell
+ *    without solid has none, +-HUGE_VAL); sums of the entering positive
+ *    and negative fluxes (vhe_fct_sums_*, into Rp and Rm, starting at 0);
+ *    vhe_fct_ratios turns them in place into Zalesak's R+ and R-; then
+ *    vhe_fct_apply_* adds lambda_f A[f] to mX = m X (start: m times the
+ *    low-order X), lambda_f per component Zalesak's, except that the
+ *    three diagonal components share the smallest of theirs, so every
+ *    component stays within its local extrema and tr X is kept exactly.
+ *    Boundary: Rp_nb, Rm_nb the coupled neighbour's ratios.
+ */
+size_t vhe_donor_finish(size_t n, const double *V, const double *phis0,
+                        const double *phis, const double *Xold,
+                        const double *out, const double *W, const double *S,
+                        double phis_min, double *m, double *X);
+void vhe_masked_grad_internal(size_t nf, const int32_t *owner,
+                              const int32_t *neighbour, const double *Sf,
+                              const double *w, const double *phis,
+                              double phis_grad, const double *X, double *G);
+void vhe_masked_grad_boundary(size_t nf, const int32_t *face_cells,
+                              const double *Sf, const double *w,
+                              const double *phis, const double *phis_nb,
+                              double phis_grad, const double *X,
+                              const double *X_nb, double *G);
+void vhe_antidiffusive_internal(size_t nf, const int32_t *owner,
+                                const int32_t *neighbour, const double *a,
+                                const double *Cf, const double *C,
+                                const double *U, double dt, const double *G,
+                                double *A);
+void vhe_antidiffusive_boundary(size_t nf, const int32_t *face_cells,
+                                const double *a, const double *Cf,
+                                const double *C, const double *U,
+                                const double *delta, const double *U_nb,
+                                const double *G_nb, double dt,
+                                const double *G, double *A);
+void vhe_fct_extrema_init(size_t n, const double *phis0, const double *Xold,
+                          const double *m, const double *X, double phis_min,
+                          double *Xmin, double *Xmax);
+void vhe_fct_extrema_internal(size_t nf, const int32_t *owner,
+                              const int32_t *neighbour, const double *Emin,
+                              const double *Emax, double *Xmin, double *Xmax);
+void vhe_fct_extrema_boundary(size_t nf, const int32_t *face_cells,
+                              const double *Emin_nb, const double *Emax_nb,
+                              double *Xmin, double *Xmax);
+void vhe_fct_sums_internal(size_t nf, const int32_t *owner,
+                           const int32_t *neighbour, const double *A,
+                           double *Pp, double *Pm);
+void vhe_fct_sums_boundary(size_t nf, const int32_t *face_cells,
+                           const double *A, double *Pp, double *Pm);
+void vhe_fct_ratios(size_t n, const double *m, const double *X,
+                    const double *Xmin, const double *Xmax, double *Rp,
+                    double *Rm);
+void vhe_fct_apply_internal(size_t nf, const int32_t *owner,
+                            const int32_t *neighbour, const double *A,
+                            const double *Rp, const double *Rm, double *mX);
+void vhe_fct_apply_boundary(size_t nf, const int32_t *face_cells,
+                            const double *A, const double *Rp,
+                            const double *Rm, const double *Rp_nb,
+                            const double *Rm_nb, double *mX);
+
 /* Sets B* = phi_s^(1/2) I (undeformed solid, zero in fluid). */
 void vhe_bstar_undeformed(size_t n, const double *phis, double *Bstar);
 

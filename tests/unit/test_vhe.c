@@ -1442,6 +1442,8 @@ static Suite *exact_suite(void)
 
 /* ================================================================ main */
 
+Suite *logb_suite(void);   /* test_logb.c */
+
 int main(void)
 {
     SRunner *sr = srunner_create(mixture_suite());
@@ -1452,6 +1454,7 @@ int main(void)
     srunner_add_suite(sr, shapes_suite());
     srunner_add_suite(sr, packing_suite());
     srunner_add_suite(sr, exact_suite());
+    srunner_add_suite(sr, logb_suite());
     srunner_run_all(sr, CK_NORMAL);
     nf = srunner_ntests_failed(sr);
     srunner_free(sr);
