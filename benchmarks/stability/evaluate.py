@@ -23,7 +23,8 @@ import sys
 ALPHA_TOL = 1e-6      # every alpha in [-tol, 1 + tol]
 VOLUME_TOL = 1e-6     # relative drift of every phase volume
 EIG_TOL = -1e-9       # B* positive semi-definite
-DET_TOL = 0.05        # |det B - 1| in solid cells (phi_s > 0.5)
+DET_TOL = 1e-8        # |det B - 1| in solid cells (phi_s > 0.5): log B is
+                      # carried, det B = 1 up to round-off
 ENERGY_TOL = 1e-6     # growth of total energy between writes, relative to
                       # the largest kinetic + elastic energy (closed,
                       # undriven boxes only: a file "closedUndriven" in the
@@ -44,10 +45,6 @@ def evaluate(case):
         alphaWorst = max(alphaWorst, -float(lo), float(hi) - 1)
     drift = max((max(abs(x / vs[0] - 1) for x in vs)
                  for vs in volumes.values() if vs[0] > 0), default=0.0)
-    # with detBCorrection, det B is 1 after every step: the error is what
-    # each step corrected (logged)
-    corrected = [float(x) for x in re.findall(
-        r"^detBCorrection: largest \|det B - 1\| corrected (\S+)", log, re.M)]
     minEig, detDrift, devB = math.inf, 0.0, 0.0
     total, balance, scale = [], [], 0.0
     diag = os.path.join(case, "postProcessing", "solidDiagnostics", "0",
@@ -86,7 +83,6 @@ def evaluate(case):
                 alphaExcursion=f"{alphaWorst:.2e}", volumeDrift=f"{drift:.2e}",
                 minEigBstar=f"{minEig:.2e}" if math.isfinite(minEig) else "",
                 maxDetDrift=f"{detDrift:.2e}", maxDevB=f"{devB:.3g}",
-                detCorrectedPerStep=f"{max(corrected):.1e}" if corrected else "",
                 energyGrowth=f"{growth:.1e}" if growth != "" else "",
                 balanceGain=f"{gain:.1e}" if gain != "" else "",
                 verdict="PASS" if not failed else "FAIL",
@@ -101,7 +97,7 @@ def main(cases, out):
         w.writeheader()
         w.writerows(rows)
     head = ("case", "steps", "seconds", "alphaExcursion", "volumeDrift",
-            "minEigBstar", "maxDetDrift", "detCorrectedPerStep", "maxDevB",
+            "minEigBstar", "maxDetDrift", "maxDevB",
             "energyGrowth",
             "balanceGain", "verdict")
     widths = [max(len(h), *(len(str(r[h])) for r in rows)) for h in head]

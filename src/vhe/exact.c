@@ -111,3 +111,51 @@ void vhe_couette_interface(const struct vhe_couette *c, int j,
     *re = creal(v);
     *im = cimag(v);
 }
+
+/* ------------------------------------------------------ prescribed flows */
+
+#define VHE_FLOW_PI 3.14159265358979323846
+
+double vhe_flow_psi(const struct vhe_flow *f, const double x[3], double t)
+{
+    switch (f->kind) {
+    case VHE_FLOW_TRANSLATION:
+        return f->U[0] * x[1] - f->U[1] * x[0];
+    case VHE_FLOW_ROTATION: {
+        const double dx = x[0] - f->origin[0], dy = x[1] - f->origin[1];
+        return -0.5 * f->omega * (dx * dx + dy * dy);
+    }
+    case VHE_FLOW_SINGLE_VORTEX: {
+        const double sx = sin(VHE_FLOW_PI * x[0]), sy = sin(VHE_FLOW_PI * x[1]);
+        return sx * sx * sy * sy * cos(VHE_FLOW_PI * t / f->period)
+               / VHE_FLOW_PI;
+    }
+    default:
+        return 0.0;
+    }
+}
+
+void vhe_flow_u(const struct vhe_flow *f, const double x[3], double t,
+                double u[3])
+{
+    u[0] = u[1] = u[2] = 0.0;
+    switch (f->kind) {
+    case VHE_FLOW_TRANSLATION:
+        u[0] = f->U[0];
+        u[1] = f->U[1];
+        break;
+    case VHE_FLOW_ROTATION:
+        u[0] = -f->omega * (x[1] - f->origin[1]);
+        u[1] = f->omega * (x[0] - f->origin[0]);
+        break;
+    case VHE_FLOW_SINGLE_VORTEX: {
+        const double c = cos(VHE_FLOW_PI * t / f->period);
+        const double sx = sin(VHE_FLOW_PI * x[0]), sy = sin(VHE_FLOW_PI * x[1]);
+        u[0] = sx * sx * sin(2.0 * VHE_FLOW_PI * x[1]) * c;
+        u[1] = -sy * sy * sin(2.0 * VHE_FLOW_PI * x[0]) * c;
+        break;
+    }
+    default:
+        break;
+    }
+}

@@ -156,49 +156,101 @@ size_t vhe_donor_finish(size_t n, const double *V, const double *phis0,
 
 /* --------------------------------------------- high order (the gradient) */
 
-void vhe_masked_grad_internal(size_t nf, const int32_t *owner,
-                              const int32_t *neighbour, const double *Sf,
-                              const double *w, const double *phis,
-                              double phis_grad, const double *X, double *G)
+/* Weighted least squares over the neighbour d (from the cell), X_nb - X_c */
+static void lsq_add(const double *d, const double *dX, double *M, double *b)
 {
-    size_t f;
-    int d, k;
+    const double w = 1.0 / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    int i, k;
 
-    for (f = 0; f < nf; ++f) {
-        const int32_t o = owner[f], nb = neighbour[f];
-        if (!(phis[o] > phis_grad) || !(phis[nb] > phis_grad)) {
-            continue;
-        }
+    M[0] += w * d[0] * d[0]; M[1] += w * d[0] * d[1];
+    M[2] += w * d[0] * d[2]; M[3] += w * d[1] * d[1];
+    M[4] += w * d[1] * d[2]; M[5] += w * d[2] * d[2];
+    for (i = 0; i < 3; ++i) {
         for (k = 0; k < 6; ++k) {
-            const double dX = X[6 * nb + k] - X[6 * o + k];
-            for (d = 0; d < 3; ++d) {
-                /* owner: S_f (X_f - X_o), X_f - X_o = (1 - w) dX;
-                 * neighbour: -S_f (X_f - X_n), X_f - X_n = -w dX */
-                G[18 * o + 6 * d + k] += Sf[3 * f + d] * (1.0 - w[f]) * dX;
-                G[18 * nb + 6 * d + k] += Sf[3 * f + d] * w[f] * dX;
-            }
+            b[6 * i + k] += w * d[i] * dX[k];
         }
     }
 }
 
-void vhe_masked_grad_boundary(size_t nf, const int32_t *face_cells,
-                              const double *Sf, const double *w,
-                              const double *phis, const double *phis_nb,
-                              double phis_grad, const double *X,
-                              const double *X_nb, double *G)
+void vhe_lsq_grad_internal(size_t nf, const int32_t *owner,
+                           const int32_t *neighbour, const double *delta,
+                           const double *phis, double phis_grad,
+                           const double *X, double *M, double *b)
 {
     size_t f;
-    int d, k;
+    int k;
+
+    for (f = 0; f < nf; ++f) {
+        const int32_t o = owner[f], nb = neighbour[f];
+        double dX[6];
+        if (!(phis[o] > phis_grad) || !(phis[nb] > phis_grad)) {
+            continue;
+        }
+        for (k = 0; k < 6; ++k) {
+            dX[k] = X[6 * nb + k] - X[6 * o + k];
+        }
+        /* the same d dX products for both cells */
+        lsq_add(delta + 3 * f, dX, M + 6 * o, b + 18 * o);
+        lsq_add(delta + 3 * f, dX, M + 6 * nb, b + 18 * nb);
+    }
+}
+
+void vhe_lsq_grad_boundary(size_t nf, const int32_t *face_cells,
+                           const double *delta, const double *phis,
+                           const double *phis_nb, double phis_grad,
+                           const double *X, const double *X_nb, double *M,
+                           double *b)
+{
+    size_t f;
+    int k;
 
     for (f = 0; f < nf; ++f) {
         const int32_t o = face_cells[f];
+        double dX[6];
         if (!(phis[o] > phis_grad) || !(phis_nb[f] > phis_grad)) {
             continue;
         }
         for (k = 0; k < 6; ++k) {
-            const double dX = X_nb[6 * f + k] - X[6 * o + k];
-            for (d = 0; d < 3; ++d) {
-                G[18 * o + 6 * d + k] += Sf[3 * f + d] * (1.0 - w[f]) * dX;
+            dX[k] = X_nb[6 * f + k] - X[6 * o + k];
+        }
+        lsq_add(delta + 3 * f, dX, M + 6 * o, b + 18 * o);
+    }
+}
+
+void vhe_lsq_grad_finish(size_t n, const double *M, const double *b,
+                         double *G)
+{
+    size_t c;
+    int i, j, k;
+
+    for (c = 0; c < n; ++c) {
+        const double *m = M + 6 * c;
+        const double tr = m[0] + m[3] + m[5];
+        /* directions without neighbours (2D's empty one, a cell with
+         * neighbours on one line only) get no gradient: regularise by a
+         * round-off fraction of the trace */
+        const double e = 1e-10 * tr;
+        const double a00 = m[0] + e, a01 = m[1], a02 = m[2];
+        const double a11 = m[3] + e, a12 = m[4], a22 = m[5] + e;
+        double inv[9], det;
+        inv[0] = a11 * a22 - a12 * a12;
+        inv[1] = a02 * a12 - a01 * a22;
+        inv[2] = a01 * a12 - a02 * a11;
+        inv[4] = a00 * a22 - a02 * a02;
+        inv[5] = a01 * a02 - a00 * a12;
+        inv[8] = a00 * a11 - a01 * a01;
+        inv[3] = inv[1]; inv[6] = inv[2]; inv[7] = inv[5];
+        det = a00 * inv[0] + a01 * inv[1] + a02 * inv[2];
+        for (i = 0; i < 3; ++i) {
+            for (k = 0; k < 6; ++k) {
+                double g = 0.0;
+                if (tr > 0.0) {
+                    for (j = 0; j < 3; ++j) {
+                        g += inv[3 * i + j] * b[18 * c + 6 * j + k];
+                    }
+                    g /= det;
+                }
+                G[18 * c + 6 * i + k] = g;
             }
         }
     }
@@ -443,4 +495,35 @@ void vhe_fct_apply_boundary(size_t nf, const int32_t *face_cells,
             mX[o + k] -= lam[k] * Af[k];
         }
     }
+}
+
+double vhe_bstar_unimodular(size_t n, const double *phis, double phis_min,
+                            double phis_solid, double *Bstar)
+{
+    double worst = 0.0;
+    size_t c;
+    int k;
+
+    for (c = 0; c < n; ++c) {
+        double *Bs = Bstar + 6 * c;
+        double B[6], P[6], t;
+        const double r = sqrt(phis[c]);
+        if (!(phis[c] > phis_min)) {
+            continue;
+        }
+        for (k = 0; k < 6; ++k) {
+            B[k] = Bs[k] / r;
+        }
+        if (phis[c] > phis_solid) {
+            worst = fmax(worst, fabs(vhe_sym_det(B) - 1.0));
+        }
+        vhe_sym_log(B, P);
+        t = (P[0] + P[3] + P[5]) / 3.0;
+        P[0] -= t; P[3] -= t; P[5] -= t;
+        vhe_sym_exp(P, B);
+        for (k = 0; k < 6; ++k) {
+            Bs[k] = r * B[k];
+        }
+    }
+    return worst;
 }

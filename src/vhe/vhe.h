@@ -164,6 +164,15 @@ void vhe_bstar_from_logb(size_t n, const double *phis, const double *Psi,
                          double phis_min, double *Bstar);
 
 /*
+ * B* of a field read from a file, made unimodular: where phis > phis_min,
+ * B = exp(dev log B), det B = 1 to round-off (a file of 8 digits holds B*
+ * to 5e-9, det B to ~3e-8).  Returns the largest |det B - 1| before, over
+ * the cells with phis > phis_solid (0 if none).
+ */
+double vhe_bstar_unimodular(size_t n, const double *phis, double phis_min,
+                            double phis_solid, double *Bstar);
+
+/*
  * Bounded second-order conservative transport of a symmTensor X per unit
  * solid volume (X = Psi) with the solid volume a[f] crossing each face
  * over the step (flux-corrected transport, Zalesak 1979):
@@ -173,13 +182,15 @@ void vhe_bstar_from_logb(size_t n, const double *phis, const double *Psi,
  *    m = max(phis0 V - out, 0) + W [m^3] and the donor-cell X, a convex
  *    combination of old X values (m = 0, X = 0 where phis <= phis_min).
  *    Returns the number of solid cells whose old content left entirely.
- * 2. Gradient of the old X, masked: G[c] (18 per cell, d/dx d/dy d/dz of
- *    the 6 components) = sum over faces whose both cells have
- *    phis > phis_grad of S_f (X_f - X_c), X_f linear (weight w of the
- *    owner); divide by the cell volume afterwards.  Cells with little
- *    solid take no part: their X is bounded but not smooth.  G starts at
- *    0.  Boundary: X_nb, phis_nb the coupled neighbour's values (pass
- *    phis_nb = 0 for other boundaries, which then add nothing).
+ * 2. Gradient G of the old X (18 per cell: d/dx, d/dy, d/dz of the 6
+ *    components) by least squares weighted 1/|d|^2 over the face
+ *    neighbours, d the vector between the cell centres, counting only
+ *    faces whose both cells have phis > phis_grad: cells with little solid
+ *    take no part (their X is bounded but not smooth), and a cell without
+ *    such neighbours has G = 0.  _internal and _boundary (coupled patches:
+ *    delta = x_nb - x_owner, phis_nb and X_nb the neighbour's values)
+ *    accumulate M (6 per cell) and b (18 per cell), starting at 0;
+ *    _finish solves per cell.  Exact for a linear X.
  * 3. Antidiffusive flux A[f] (6 per face, [m^3]) = a (X_f - X_up), the
  *    MUSCL-Hancock face value X_f = X_up + (x_f - x_up - dt/2 U_up) . G_up
  *    (second order in space and time, upwind cell up), positive from the
@@ -201,15 +212,17 @@ size_t vhe_donor_finish(size_t n, const double *V, const double *phis0,
                         const double *phis, const double *Xold,
                         const double *out, const double *W, const double *S,
                         double phis_min, double *m, double *X);
-void vhe_masked_grad_internal(size_t nf, const int32_t *owner,
-                              const int32_t *neighbour, const double *Sf,
-                              const double *w, const double *phis,
-                              double phis_grad, const double *X, double *G);
-void vhe_masked_grad_boundary(size_t nf, const int32_t *face_cells,
-                              const double *Sf, const double *w,
-                              const double *phis, const double *phis_nb,
-                              double phis_grad, const double *X,
-                              const double *X_nb, double *G);
+void vhe_lsq_grad_internal(size_t nf, const int32_t *owner,
+                           const int32_t *neighbour, const double *delta,
+                           const double *phis, double phis_grad,
+                           const double *X, double *M, double *b);
+void vhe_lsq_grad_boundary(size_t nf, const int32_t *face_cells,
+                           const double *delta, const double *phis,
+                           const double *phis_nb, double phis_grad,
+                           const double *X, const double *X_nb, double *M,
+                           double *b);
+void vhe_lsq_grad_finish(size_t n, const double *M, const double *b,
+                         double *G);
 void vhe_antidiffusive_internal(size_t nf, const int32_t *owner,
                                 const int32_t *neighbour, const double *a,
                                 const double *Cf, const double *C,
@@ -267,21 +280,6 @@ double vhe_sym_det(const double S[6]);
  */
 void vhe_solid_diagnostics(size_t n, const double *phis, const double *Bstar,
                            double phis_solid, double out[3]);
-
-/*
- * Isochoric correction of B (an option of the case, never silent): in
- * cells with phis > phis_min and det(B) > 0, B = B* / phi_s^(1/2) is
- * scaled to det(B) = 1, the exact value for the incompressible solid that
- * the donor-cell advection of B (averaging B of neighbouring cells; det is
- * not linear) does not keep.  empty = -1 (3D): B <- B det(B)^(-1/3);
- * empty = 0, 1 or 2 (2D, that direction empty): the in-plane block is
- * scaled by det(B)^(-1/2) and the empty direction's components are kept
- * (plane strain).  Returns the largest |det(B) - 1| before the correction
- * over the cells with phis > phis_solid (as vhe_solid_diagnostics; 0 if
- * there is none).
- */
-double vhe_isochoric(size_t n, const double *phis, double phis_min,
-                     double phis_solid, int empty, double *Bstar);
 
 /*
  * Repairs B* in place where it is not positive definite: eigenvalues below
@@ -464,6 +462,35 @@ void vhe_couette_eval(const struct vhe_couette *c, double y, double t,
                       double *u, double *gamma);
 void vhe_couette_interface(const struct vhe_couette *c, int j,
                            double *re, double *im);
+
+/*
+ * Prescribed 2D flows (x-y plane) of the transport verification, from a
+ * stream function psi [m^2/s] (u = d psi/dy, v = -d psi/dx), so that face
+ * fluxes from psi at the face's end points are exactly divergence-free:
+ *   translation    uniform U[0], U[1] [m/s]
+ *   rotation       solid-body rotation, omega [rad/s] about origin [m]
+ *   singleVortex   LeVeque (1996) on the unit square: psi = sin^2(pi x)
+ *                  sin^2(pi y) cos(pi t/period)/pi, reversing, so the
+ *                  state at t = period is the initial one
+ * vhe_flow_psi gives psi at x and time t, vhe_flow_u the velocity.
+ */
+enum vhe_flow_kind {
+    VHE_FLOW_TRANSLATION = 0,
+    VHE_FLOW_ROTATION = 1,
+    VHE_FLOW_SINGLE_VORTEX = 2
+};
+
+struct vhe_flow {
+    int kind;              /* enum vhe_flow_kind */
+    double U[2];           /* translation [m/s] */
+    double origin[2];      /* rotation centre [m] */
+    double omega;          /* rotation rate [rad/s] */
+    double period;         /* single vortex [s] */
+};
+
+double vhe_flow_psi(const struct vhe_flow *f, const double x[3], double t);
+void vhe_flow_u(const struct vhe_flow *f, const double x[3], double t,
+                double u[3]);
 
 #ifdef __cplusplus
 }

@@ -118,6 +118,7 @@ static void transport_1d(int n, double u, double dt, int high, double *X)
     double *V = malloc(n * sizeof *V), *phis = malloc(n * sizeof *phis);
     double *out = calloc(n, sizeof *out), *W = calloc(n, sizeof *W);
     double *S = calloc(6 * n, sizeof *S), *m = calloc(n, sizeof *m);
+    (void)Sf; (void)w;
     double *XL = calloc(6 * n, sizeof *XL), *G = calloc(18 * n, sizeof *G);
     double *A = calloc(6 * n, sizeof *A), *Xmin = calloc(6 * n, sizeof *Xmin);
     double *Xmax = calloc(6 * n, sizeof *Xmax);
@@ -141,10 +142,14 @@ static void transport_1d(int n, double u, double dt, int high, double *X)
     vhe_bdonor_internal(n, own, nei, a, X, out, W, S);
     vhe_donor_finish(n, V, phis, phis, X, out, W, S, 1e-6, m, XL);
     if (high) {
-        vhe_masked_grad_internal(n, own, nei, Sf, w, phis, 0.01, X, G);
-        for (i = 0; i < 18 * n; ++i) {
-            G[i] /= dx;
+        double *M = calloc(6 * n, sizeof *M), *b = calloc(18 * n, sizeof *b);
+        double *d = calloc(3 * n, sizeof *d);
+        for (i = 0; i < n; ++i) {
+            d[3 * i] = dx;
         }
+        vhe_lsq_grad_internal(n, own, nei, d, phis, 0.01, X, M, b);
+        vhe_lsq_grad_finish(n, M, b, G);
+        free(M); free(b); free(d);
         vhe_antidiffusive_internal(n, own, nei, a, Cf, C, U, dt, G, A);
         vhe_fct_extrema_init(n, phis, X, m, XL, 1e-6, Emin, Emax);
         memcpy(Xmin, Emin, 6 * n * sizeof *Xmin);

@@ -503,66 +503,6 @@ START_TEST(test_stretch_implicit_bdf2_order)
 }
 END_TEST
 
-START_TEST(test_isochoric)
-{
-    /* 3D: a sheared, dilated B (det 1.3^3) in a cell of phi_s 0.25 */
-    const double phis[3] = {0.25, 1.0, 1e-9};
-    const double B0[6] = {1.3 * 1.1, 1.3 * 0.4, 0.0, 1.3 * 1.0, 0.0, 1.3 * 1.2};
-    double Bs[18], B[6], ratio;
-    int k;
-
-    for (k = 0; k < 6; ++k) {
-        Bs[k] = 0.5 * B0[k];            /* B* = phi_s^(1/2) B */
-        Bs[6 + k] = B0[k];
-        Bs[12 + k] = B0[k];
-    }
-    ratio = vhe_isochoric(3, phis, 1e-6, 0.1, -1, Bs);
-    ASSERT_NEAR(ratio, fabs(vhe_sym_det(B0) - 1.0), 1e-12);
-    for (k = 0; k < 6; ++k) {
-        B[k] = Bs[k] / 0.5;
-    }
-    ASSERT_NEAR(vhe_sym_det(B), 1.0, 1e-13);
-    ASSERT_NEAR(vhe_sym_det(Bs + 6), 1.0, 1e-13);
-    /* the shape is kept: B is a multiple of B0 */
-    for (k = 0; k < 6; ++k) {
-        ASSERT_NEAR(B[k] * B0[0], B0[k] * B[0], 1e-13);
-    }
-    /* a cell below phis_min is left alone */
-    for (k = 0; k < 6; ++k) {
-        ck_assert(Bs[12 + k] == B0[k]);
-    }
-
-    /* 2D, z empty: B_zz kept at 1, the in-plane block scaled */
-    {
-        const double one[1] = {1.0};
-        double P[6] = {1.5, 0.7, 0.0, 1.2, 0.0, 1.0};
-        const double P0[6] = {1.5, 0.7, 0.0, 1.2, 0.0, 1.0};
-        vhe_isochoric(1, one, 1e-6, 0.5, 2, P);
-        ASSERT_NEAR(vhe_sym_det(P), 1.0, 1e-13);
-        ck_assert(P[5] == 1.0);
-        ASSERT_NEAR(P[1] * P0[0], P0[1] * P[0], 1e-13);
-    }
-
-    /* an isochoric B is unchanged (to round-off) and reports 0 drift */
-    {
-        const double one[1] = {1.0};
-        double Q[6] = {1.0 + 0.09, 0.3, 0.0, 1.0, 0.0, 1.0};
-        ratio = vhe_isochoric(1, one, 1e-6, 0.5, 2, Q);
-        ASSERT_NEAR(ratio, 0.0, 1e-14);
-        ASSERT_NEAR(Q[0], 1.09, 1e-14);
-    }
-
-    /* a cell at or below phis_solid is corrected but not reported */
-    {
-        const double quarter[1] = {0.25};
-        double R[6] = {0.5 * 2.0, 0.0, 0.0, 0.5 * 1.0, 0.0, 0.5 * 1.0};
-        ratio = vhe_isochoric(1, quarter, 1e-6, 0.5, -1, R);
-        ck_assert(ratio == 0.0);
-        ASSERT_NEAR(vhe_sym_det(R) / 0.125, 1.0, 1e-13);
-    }
-}
-END_TEST
-
 START_TEST(test_clip_and_undeformed)
 {
     const double phis[3] = {0.25, 1e-9, 0.0};
@@ -703,7 +643,6 @@ static Suite *stretch_suite(void)
     tcase_add_test(tc, test_stretch_implicit_shear_and_residual);
     tcase_add_test(tc, test_stretch_implicit_bdf2_order);
     tcase_add_test(tc, test_clip_and_undeformed);
-    tcase_add_test(tc, test_isochoric);
     tcase_add_test(tc, test_b_from_bstar);
     tcase_add_test(tc, test_bdonor);
     suite_add_tcase(s, tc);

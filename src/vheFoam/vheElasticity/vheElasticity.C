@@ -9,23 +9,7 @@
 #include "zeroGradientFvPatchFields.H"
 #include "polyPatch.H"
 #include "vhe.h"
-
-// OpenFOAM's VectorSpace types are contiguous doubles (checked by the
-// layout tests of the C core): view a field as the flat array it is.
-namespace
-{
-template<class T>
-inline const double* flat(const Foam::UList<T>& f)
-{
-    return reinterpret_cast<const double*>(f.cdata());
-}
-template<class T>
-inline double* flat(Foam::UList<T>& f)
-{
-    return reinterpret_cast<double*>(f.data());
-}
-}
-
+#include "vheFlat.H"
 
 Foam::wordList Foam::vheElasticity::patchTypes(const fvMesh& mesh)
 {
@@ -65,7 +49,7 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
     ),
     semiImplicit_(true),
     backward_(false),
-    detCorrection_(false),
+    transport_(mixture, mesh_.solutionDict().subDict("PIMPLE")),
     stabilisation_(0)
 {
     const dictionary& pimple = mesh_.solutionDict().subDict("PIMPLE");
@@ -111,12 +95,9 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
                 << exit(FatalIOError);
         }
     }
-    // Opt-in isochoric correction of B after each step's update (DESIGN:
-    // any det(B) correction is an option, never silent)
-    detCorrection_ = pimple.getOrDefault<Switch>("detBCorrection", false);
     Info<< "Elastic stress: " << variant
         << (backward_ ? ", second order in time (backward, BDF2)" : "")
-        << (detCorrection_ ? "; B scaled to det B = 1 (detBCorrection)" : "")
+        << "; B carried as " << transport_.scheme()
         << endl;
     if (backward_)
     {
@@ -160,6 +141,30 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
                 << " is not positive semi-definite: smallest eigenvalue "
                 << minEig << exit(FatalIOError);
         }
+        // The incompressible solid has det B = 1; a written field holds
+        // it to its digits only (8 digits: det B to ~3e-8), and the
+        // transport keeps whatever det it starts from.  Take B to its
+        // unimodular part once, here.
+        const scalar removed = returnReduce
+        (
+            vhe_bstar_unimodular
+            (
+                mesh_.nCells(), mixture.phis().primitiveField().cdata(),
+                mixture.solidFractionMin(), 0.5,
+                flat(Bstar_.primitiveFieldRef())
+            ),
+            maxOp<scalar>()
+        );
+        Bstar_.correctBoundaryConditions();
+        Info<< "Bstar taken to det B = 1 (largest |det B - 1| read: "
+            << removed << ")" << endl;
+        if (removed > 1e-6)
+        {
+            WarningInFunction
+                << Bstar_.objectPath() << " is not isochoric: |det B - 1|"
+                << " up to " << removed << " (the solid is incompressible)"
+                << endl;
+        }
     }
     else
     {
@@ -176,73 +181,9 @@ Foam::vheElasticity::vheElasticity(const vheMixture& mixture)
 }
 
 
-void Foam::vheElasticity::advect(scalar deltaT)
+void Foam::vheElasticity::advect(const volVectorField& U, scalar deltaT)
 {
-    const volScalarField& phis = mixture_.phis();
-    const volScalarField& phis0 = phis.oldTime();
-    const scalar phisMin = mixture_.solidFractionMin();
-    const label nCells = mesh_.nCells();
-
-    // Old B of the solid; I where there is none
-    volSymmTensorField B0
-    (
-        IOobject("B", mesh_.time().timeName(), mesh_),
-        mesh_,
-        dimensionedSymmTensor(dimless, Zero),
-        patchTypes(mesh_)
-    );
-    vhe_b_from_bstar
-    (
-        nCells, phis0.primitiveField().cdata(),
-        flat(Bstar_.oldTime().primitiveField()), phisMin,
-        flat(B0.primitiveFieldRef())
-    );
-    B0.correctBoundaryConditions();
-
-    // Solid volume crossing each face over the step [m^3]
-    const surfaceScalarField& aPhi = mixture_.alphaPhiSolid();
-    const scalarField a(deltaT*aPhi.primitiveField());
-
-    scalarField out(nCells, 0), W(nCells, 0);
-    symmTensorField S(nCells, Zero);
-
-    vhe_bdonor_internal
-    (
-        mesh_.nInternalFaces(), mesh_.owner().cdata(),
-        mesh_.neighbour().cdata(), a.cdata(), flat(B0.primitiveField()),
-        out.data(), W.data(), flat(S)
-    );
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatchSymmTensorField& Bp = B0.boundaryField()[patchi];
-        if (Bp.empty()) continue;
-        // Across a coupled patch the donor is the neighbour cell; at any
-        // other boundary, the boundary value
-        const symmTensorField Bnb
-        (
-            Bp.coupled() ? Bp.patchNeighbourField()() : symmTensorField(Bp)
-        );
-        const scalarField ap(deltaT*aPhi.boundaryField()[patchi]);
-        vhe_bdonor_boundary
-        (
-            ap.size(), mesh_.boundary()[patchi].faceCells().cdata(),
-            ap.cdata(), flat(Bnb), out.data(), W.data(), flat(S)
-        );
-    }
-
-    const size_t flushed = vhe_bdonor_finish
-    (
-        nCells, mesh_.V().cdata(), phis0.primitiveField().cdata(),
-        phis.primitiveField().cdata(), flat(B0.primitiveField()),
-        out.cdata(), W.cdata(), flat(S), phisMin,
-        flat(Bstar_.primitiveFieldRef())
-    );
-    const label nFlushed = returnReduce(label(flushed), sumOp<label>());
-    if (nFlushed)
-    {
-        Info<< "B advection: " << nFlushed << " solid cells renewed entirely"
-            << " in one step (reduce maxAlphaCo if this persists)" << endl;
-    }
+    transport_.advect(Bstar_, U, deltaT);
 }
 
 
@@ -852,29 +793,6 @@ void Foam::vheElasticity::clip()
         mesh_.nCells(), mixture_.phis().primitiveField().cdata(),
         mixture_.solidFractionMin(), flat(Bstar_.primitiveFieldRef())
     );
-    if (detCorrection_)
-    {
-        // empty direction of a 2D case (plane strain: its B component
-        // stays), -1 in 3D
-        const Vector<label> solD(mesh_.solutionD());
-        int empty = -1;
-        for (direction d = 0; d < 3; ++d)
-        {
-            if (solD[d] < 0) empty = d;
-        }
-        const scalar corrected = returnReduce
-        (
-            vhe_isochoric
-            (
-                mesh_.nCells(), mixture_.phis().primitiveField().cdata(),
-                mixture_.solidFractionMin(), 0.5, empty,
-                flat(Bstar_.primitiveFieldRef())
-            ),
-            maxOp<scalar>()
-        );
-        Info<< "detBCorrection: largest |det B - 1| corrected " << corrected
-            << " (cells with phi_s > 0.5)" << endl;
-    }
     Bstar_.correctBoundaryConditions();
 }
 
