@@ -423,9 +423,14 @@ void vhe_fct_ratios(size_t n, const double *m, const double *X,
     for (c = 0; c < n; ++c) {
         for (k = 0; k < 6; ++k) {
             const size_t i = 6 * c + k;
-            /* room above and below the local extrema, as content [m^3] */
-            const double qp = m[c] * fmax(Xmax[i] - X[i], 0.0);
-            const double qm = m[c] * fmax(X[i] - Xmin[i], 0.0);
+            /* room above and below the local extrema, as content [m^3],
+             * plus a round-off allowance: a component that is constant
+             * to round-off (Psi_zz = 0 in 2D) has no room, and its
+             * round-off fluxes would otherwise stop the antidiffusion of
+             * the diagonal components it shares its limiter with */
+            const double tiny = 1e-12 * m[c];
+            const double qp = m[c] * fmax(Xmax[i] - X[i], 0.0) + tiny;
+            const double qm = m[c] * fmax(X[i] - Xmin[i], 0.0) + tiny;
             Rp[i] = Rp[i] > qp ? qp / Rp[i] : 1.0;
             Rm[i] = Rm[i] > qm ? qm / Rm[i] : 1.0;
         }

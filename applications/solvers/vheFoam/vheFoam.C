@@ -27,6 +27,7 @@ Description
 #include "vheMixture.H"
 #include "vheElasticity.H"
 #include "wallShearCorrection.H"
+#include "prescribedFlow.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -72,15 +73,24 @@ int main(int argc, char *argv[])
 
         #include "updateMesh.H"
 
+        if (flow.active())
+        {
+            flow.set(U, phi, runTime.value() - 0.5*runTime.deltaTValue());
+        }
+
         while (pimple.loop())
         {
             #include "alphaEqn.H"
             #include "BEqn.H"
-            #include "UEqn.H"
 
-            while (pimple.correct())
+            if (!flow.active())
             {
-                #include "pEqn.H"
+                #include "UEqn.H"
+
+                while (pimple.correct())
+                {
+                    #include "pEqn.H"
+                }
             }
 
             #include "BStretch.H"
