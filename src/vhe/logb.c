@@ -258,61 +258,113 @@ void vhe_lsq_grad_finish(size_t n, const double *M, const double *b,
 
 /* ------------------------------------- antidiffusive flux and its limiter */
 
-/* a (r . G) for the upwind cell's gradient G (18) and displacement r. */
-static void face_increment(double a, const double r[3], const double *G,
-                           double *A)
+/*
+ * Antidiffusive flux of one face: a (X_f - X_up), the QUICKEST face value
+ * (Leonard 1979) in the gradient form of MUSCL-Hancock:
+ *   X_f = X_up + r . G_up + k/2 ((X_dn - X_up) - d . G_up),
+ *   r = x_f - x_up - dt/2 U_up,  d = x_dn - x_up,
+ *   k = (1 - c)(1 - 2c)/3,  c = |a| / (|S_f| |d| phis_up) (face Courant),
+ * which in 1D on a uniform mesh is third order in space and time; k = 0
+ * (Fromm's scheme, second order, its error 5x larger at c = 0.1 than at
+ * 0.4) where the downwind cell takes no part in gradients.
+ */
+static void face_increment(double a, double magSf, const double *d,
+                           const double *r, double phis_up, int curvature,
+                           const double *X_up, const double *X_dn,
+                           const double *G, double *A)
 {
-    int k;
+    const double magd = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double c = fabs(a) / (magSf * magd * phis_up);
+    double k;
+    int i;
 
-    for (k = 0; k < 6; ++k) {
-        A[k] = a * (r[0] * G[k] + r[1] * G[6 + k] + r[2] * G[12 + k]);
+    c = c < 1.0 ? c : 1.0;
+    k = curvature ? (1.0 - c) * (1.0 - 2.0 * c) / 3.0 : 0.0;
+    for (i = 0; i < 6; ++i) {
+        const double rG = r[0] * G[i] + r[1] * G[6 + i] + r[2] * G[12 + i];
+        const double dG = d[0] * G[i] + d[1] * G[6 + i] + d[2] * G[12 + i];
+        A[i] = a * (rG + 0.5 * k * ((X_dn[i] - X_up[i]) - dG));
     }
 }
 
 void vhe_antidiffusive_internal(size_t nf, const int32_t *owner,
                                 const int32_t *neighbour, const double *a,
+                                const double *Sf, const double *delta,
                                 const double *Cf, const double *C,
-                                const double *U, double dt, const double *G,
-                                double *A)
+                                const double *U, const double *phis,
+                                double phis_grad, const double *X,
+                                const double *G, double dt, double *A)
 {
     size_t f;
-    int d;
+    int k;
 
     for (f = 0; f < nf; ++f) {
-        const int32_t up = a[f] >= 0.0 ? owner[f] : neighbour[f];
-        double r[3];
-        for (d = 0; d < 3; ++d) {
-            r[d] = Cf[3 * f + d] - C[3 * up + d] - 0.5 * dt * U[3 * up + d];
+        const int fwd = a[f] >= 0.0;
+        const int32_t up = fwd ? owner[f] : neighbour[f];
+        const int32_t dn = fwd ? neighbour[f] : owner[f];
+        const double *S = Sf + 3 * f;
+        double r[3], d[3];
+        if (!(phis[up] > phis_grad)) {
+            for (k = 0; k < 6; ++k) {
+                A[6 * f + k] = 0.0;    /* G_up = 0: donor cell */
+            }
+            continue;
         }
-        face_increment(a[f], r, G + 18 * (size_t)up, A + 6 * f);
+        for (k = 0; k < 3; ++k) {
+            r[k] = Cf[3 * f + k] - C[3 * up + k] - 0.5 * dt * U[3 * up + k];
+            d[k] = fwd ? delta[3 * f + k] : -delta[3 * f + k];
+        }
+        face_increment(a[f], sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]),
+                       d, r, phis[up], phis[dn] > phis_grad, X + 6 * up,
+                       X + 6 * dn, G + 18 * (size_t)up, A + 6 * f);
     }
 }
 
 void vhe_antidiffusive_boundary(size_t nf, const int32_t *face_cells,
-                                const double *a, const double *Cf,
+                                const double *a, const double *Sf,
+                                const double *delta, const double *Cf,
                                 const double *C, const double *U,
-                                const double *delta, const double *U_nb,
-                                const double *G_nb, double dt,
-                                const double *G, double *A)
+                                const double *phis, const double *phis_nb,
+                                double phis_grad, const double *X,
+                                const double *X_nb, const double *U_nb,
+                                const double *G, const double *G_nb,
+                                double dt, double *A)
 {
     size_t f;
-    int d;
+    int k;
 
     for (f = 0; f < nf; ++f) {
         const int32_t o = face_cells[f];
-        double r[3];
-        if (a[f] >= 0.0) {
-            for (d = 0; d < 3; ++d) {
-                r[d] = Cf[3 * f + d] - C[3 * o + d] - 0.5 * dt * U[3 * o + d];
+        const double *S = Sf + 3 * f;
+        const double magSf = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
+        const int fwd = a[f] >= 0.0;
+        const double phis_up = fwd ? phis[o] : phis_nb[f];
+        const double phis_dn = fwd ? phis_nb[f] : phis[o];
+        double r[3], d[3];
+        if (!(phis_up > phis_grad)) {
+            for (k = 0; k < 6; ++k) {
+                A[6 * f + k] = 0.0;
             }
-            face_increment(a[f], r, G + 18 * (size_t)o, A + 6 * f);
+            continue;
+        }
+        if (fwd) {
+            for (k = 0; k < 3; ++k) {
+                r[k] = Cf[3 * f + k] - C[3 * o + k] - 0.5 * dt * U[3 * o + k];
+                d[k] = delta[3 * f + k];
+            }
+            face_increment(a[f], magSf, d, r, phis_up, phis_dn > phis_grad,
+                           X + 6 * o, X_nb + 6 * f, G + 18 * (size_t)o,
+                           A + 6 * f);
         } else {
-            /* the neighbour's centre is C_o + delta */
-            for (d = 0; d < 3; ++d) {
-                r[d] = Cf[3 * f + d] - C[3 * o + d] - delta[3 * f + d]
-                       - 0.5 * dt * U_nb[3 * f + d];
+            /* the neighbour's centre is x_o + delta */
+            for (k = 0; k < 3; ++k) {
+                r[k] = Cf[3 * f + k] - C[3 * o + k] - delta[3 * f + k]
+                       - 0.5 * dt * U_nb[3 * f + k];
+                d[k] = -delta[3 * f + k];
             }
-            face_increment(a[f], r, G_nb + 18 * f, A + 6 * f);
+            face_increment(a[f], magSf, d, r, phis_up, phis_dn > phis_grad,
+                           X_nb + 6 * f, X + 6 * o, G_nb + 18 * f,
+                           A + 6 * f);
         }
     }
 }

@@ -191,11 +191,16 @@ double vhe_bstar_unimodular(size_t n, const double *phis, double phis_min,
  *    delta = x_nb - x_owner, phis_nb and X_nb the neighbour's values)
  *    accumulate M (6 per cell) and b (18 per cell), starting at 0;
  *    _finish solves per cell.  Exact for a linear X.
- * 3. Antidiffusive flux A[f] (6 per face, [m^3]) = a (X_f - X_up), the
- *    MUSCL-Hancock face value X_f = X_up + (x_f - x_up - dt/2 U_up) . G_up
- *    (second order in space and time, upwind cell up), positive from the
- *    owner to the neighbour.  Boundary: delta = x_nb - x_owner, U_nb, G_nb
- *    the neighbour's (coupled patches; pass a = 0 elsewhere).
+ * 3. Antidiffusive flux A[f] (6 per face, [m^3]) = a (X_f - X_up), X_f
+ *    the QUICKEST face value (Leonard 1979) in MUSCL-Hancock form:
+ *      X_f = X_up + (x_f - x_up - dt/2 U_up) . G_up
+ *            + k/2 ((X_dn - X_up) - (x_dn - x_up) . G_up),
+ *    k = (1 - c)(1 - 2c)/3, c = |a| / (|S_f| |x_dn - x_up| phis_up) the
+ *    face Courant number (third order in 1D on a uniform mesh; k = 0 where
+ *    the downwind cell has phis <= phis_grad), up the upwind cell, A = 0
+ *    where phis_up <= phis_grad; positive from the owner to the neighbour.
+ *    delta = x_neighbour - x_owner per face.  Boundary (coupled patches;
+ *    pass a = 0 elsewhere): phis_nb, X_nb, U_nb, G_nb the neighbour's.
  * 4. Limiter: local extrema of the old and low-order X over each cell
  *    and its face neighbours (vhe_fct_extrema_init, then _internal and
  *    _boundary with Emin/Emax the cells' own extrema from init: a cell
@@ -225,15 +230,20 @@ void vhe_lsq_grad_finish(size_t n, const double *M, const double *b,
                          double *G);
 void vhe_antidiffusive_internal(size_t nf, const int32_t *owner,
                                 const int32_t *neighbour, const double *a,
+                                const double *Sf, const double *delta,
                                 const double *Cf, const double *C,
-                                const double *U, double dt, const double *G,
-                                double *A);
+                                const double *U, const double *phis,
+                                double phis_grad, const double *X,
+                                const double *G, double dt, double *A);
 void vhe_antidiffusive_boundary(size_t nf, const int32_t *face_cells,
-                                const double *a, const double *Cf,
+                                const double *a, const double *Sf,
+                                const double *delta, const double *Cf,
                                 const double *C, const double *U,
-                                const double *delta, const double *U_nb,
-                                const double *G_nb, double dt,
-                                const double *G, double *A);
+                                const double *phis, const double *phis_nb,
+                                double phis_grad, const double *X,
+                                const double *X_nb, const double *U_nb,
+                                const double *G, const double *G_nb,
+                                double dt, double *A);
 void vhe_fct_extrema_init(size_t n, const double *phis0, const double *Xold,
                           const double *m, const double *X, double phis_min,
                           double *Xmin, double *Xmax);

@@ -269,8 +269,11 @@ void Foam::BTransport::advectLog
     vhe_antidiffusive_internal
     (
         nIntFaces, own.cdata(), nei.cdata(), a.cdata(),
+        flat(mesh_.Sf().primitiveField()), flat(delta.primitiveField()),
         flat(mesh_.Cf().primitiveField()), flat(mesh_.C().primitiveField()),
-        flat(U.primitiveField()), deltaT, G.cdata(), flat(A)
+        flat(U.primitiveField()), phis0.primitiveField().cdata(),
+        phisGradient_, flat(Psi0.primitiveField()), G.cdata(), deltaT,
+        flat(A)
     );
     PtrList<symmTensorField> Ab(mesh_.boundary().size());
     forAll(mesh_.boundary(), patchi)
@@ -280,6 +283,14 @@ void Foam::BTransport::advectLog
         if (!p.coupled() || !p.size()) continue;
         const scalarField ap(deltaT*aPhi.boundaryField()[patchi]);
         const vectorField Unb(U.boundaryField()[patchi].patchNeighbourField());
+        const scalarField phisNb
+        (
+            phis0.boundaryField()[patchi].patchNeighbourField()
+        );
+        const symmTensorField Pnb
+        (
+            Psi0.boundaryField()[patchi].patchNeighbourField()
+        );
         scalarField Gnb(18*p.size());
         for (direction d = 0; d < 3; ++d)
         {
@@ -298,10 +309,13 @@ void Foam::BTransport::advectLog
         vhe_antidiffusive_boundary
         (
             p.size(), p.faceCells().cdata(), ap.cdata(),
+            flat(mesh_.Sf().boundaryField()[patchi]),
+            flat(delta.boundaryField()[patchi]),
             flat(mesh_.Cf().boundaryField()[patchi]),
             flat(mesh_.C().primitiveField()), flat(U.primitiveField()),
-            flat(delta.boundaryField()[patchi]), flat(Unb), Gnb.cdata(),
-            deltaT, G.cdata(), flat(Ab[patchi])
+            phis0.primitiveField().cdata(), phisNb.cdata(), phisGradient_,
+            flat(Psi0.primitiveField()), flat(Pnb), flat(Unb), G.cdata(),
+            Gnb.cdata(), deltaT, flat(Ab[patchi])
         );
     }
 
