@@ -102,8 +102,10 @@ d=$(variant negativeStabilisation); sed -i 's/^    pRefValue .*/&\n    elasticSt
 expectFatal negativeStabilisation "$d" vheFoam "elasticStabilisation must be >= 0" fvSolution
 d=$(variant badSecondOrderWalls); sed -i 's/^    pRefValue .*/&\n    secondOrderWalls maybe;/' "$d/system/fvSolution"
 expectFatal badSecondOrderWalls "$d" vheFoam "Expected 'true/false', 'on/off' ... found maybe" fvSolution.PIMPLE.secondOrderWalls
-d=$(variant badDetBCorrection); sed -i 's/^    pRefValue .*/&\n    detBCorrection sometimes;/' "$d/system/fvSolution"
-expectFatal badDetBCorrection "$d" vheFoam "Expected 'true/false', 'on/off' ... found sometimes" fvSolution.PIMPLE.detBCorrection
+d=$(variant unknownBTransport); sed -i 's/^    pRefValue .*/&\n    BTransport upwindish;/' "$d/system/fvSolution"
+expectFatal unknownBTransport "$d" vheFoam "Unknown BTransport 'upwindish'" fvSolution
+d=$(variant unknownPrescribedVelocity); sed -i 's/^    pRefValue .*/&\n    prescribedVelocity { type swirl; }/' "$d/system/fvSolution"
+expectFatal unknownPrescribedVelocity "$d" vheFoam "Unknown prescribedVelocity type 'swirl'" fvSolution
 d=$(variant unsupportedDdtScheme); setEntry "$d/system/fvSchemes" ddtSchemes/default CrankNicolson
 expectFatal unsupportedDdtScheme "$d" vheFoam "ddt\(rho,U\) scheme 'CrankNicolson' is not supported" fvSchemes
 d=$(variant backwardExplicit); setEntry "$d/system/fvSchemes" ddtSchemes/default backward

@@ -1,14 +1,18 @@
 #!/bin/bash
 # Restart: a run stopped at a written time and restarted from it ends where
 # the continuous run ends (disks in the channel, semi-implicit elasticity,
-# B*, alpha and U compared at the end; bound 1e-6 of the field scale, the
-# files hold 8 digits).
+# B*, alpha and U compared at the end).  The cases write 17 digits, so the
+# restart must continue exactly: bound 1e-12 of the field scale (measured
+# 5.6e-15 for B*, 1e-17 for U).  (With 8 digits B* differs by 2.5e-6 of
+# its scale at t = 0.6: the limiters of the transport are not smooth
+# functions of their input, and cells of little solid amplify it.)
 . "$(dirname "$0")/lib.sh"
 
 cont="$WORK/continuous" rest="$WORK/restarted"
 channelCase "$cont" cells=32 nDisks=6 G=0.5 endTime=0.6 writeInterval=0.3 \
     || { fail setup blockMesh; finish; }
 sed -i 's/relTol          0.01;/relTol 0;/' "$cont/system/fvSolution"
+sed -i 's/^writePrecision .*/writePrecision  17;/' "$cont/system/controlDict"
 run "$cont" setBodies || { fail setup setBodies; finish; }
 cp -r "$cont" "$rest"
 run "$cont" vheFoam || fail continuousRun "$cont/log.vheFoam"
@@ -21,6 +25,6 @@ run "$rest" vheFoam || fail secondPart "$rest/log.vheFoam"
 
 for f in U Bstar alpha.rubber; do
     read -r d m <<< "$(maxFieldDiff "$cont" "$rest" 0.6 "$f")"
-    check "restart_$f" "$d <= 1e-6*$m" "max |$f continuous - restarted| = $d at t = 0.6 (scale $m)"
+    check "restart_$f" "$d <= 1e-12*$m" "max |$f continuous - restarted| = $d at t = 0.6 (scale $m)"
 done
 finish
