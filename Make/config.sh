@@ -33,8 +33,10 @@ export FOAM_USER_APPBIN="$VHE_ROOT/platforms/$WM_OPTIONS/bin"
 export FOAM_USER_LIBBIN="$VHE_ROOT/platforms/$WM_OPTIONS/lib"
 export FOAM_SITE_APPBIN="$FOAM_USER_APPBIN"
 export FOAM_SITE_LIBBIN="$FOAM_USER_LIBBIN"
-export WM_PROJECT_USER_DIR="$VHE_ROOT"
-export FOAM_RUN="$VHE_ROOT/tutorials"
+# The user's own directory and run directory, where OpenFOAM puts them
+# (cases are copied there from $VHE_ROOT/tutorials; nothing creates it)
+export WM_PROJECT_USER_DIR="$HOME/OpenFOAM/${USER:-$(id -un)}-$WM_PROJECT_VERSION"
+export FOAM_RUN="$WM_PROJECT_USER_DIR/run"
 export FOAM_SIGFPE=true
 
 case ":$PATH:" in

@@ -2,7 +2,11 @@
 # Plots (gnuplot) and images (pvbatch) of a bubbleObstacle case; called by
 # Allrun, can be rerun on its own.   ./postProcess.sh [amr|uniform]
 cd "$(dirname "$0")" || exit 1
-. ../common/functions.sh
+# the project's functions through the environment that Make/bashrc sets,
+# as OpenFOAM's tutorials reach RunFunctions: a copy of this tutorial runs
+# anywhere once "source <vheFoam>/Make/bashrc" is done
+[ -n "${VHE_ROOT:-}" ] || [ ! -f ../common/functions.sh ] || VHE_ROOT=$(cd ../.. && pwd)
+. "${VHE_ROOT:?source <vheFoam>/Make/bashrc first}/tutorials/common/functions.sh"
 name=${1:-amr}
 d=cases/$name
 mkdir -p results
@@ -32,6 +36,6 @@ plot 'results/cells_$name.dat' u 1:2 w steps lw 2 t 'dynamicRefineFvMesh'
 GP
 fi
 
-vhe_pvbatch "results/log.pvbatch.$name" ../common/renderPhases.py "$d/$name.foam" \
+vhe_pvbatch "results/log.pvbatch.$name" "$VHE_ROOT/tutorials/common/renderPhases.py" "$d/$name.foam" \
     "results/scene_$name" alpha.air,phis 0 0.5 1 1.5 || exit 1
 echo "Results in $(pwd)/results: $(cd results && ls ./*"$name"* | tr '\n' ' ')"

@@ -11,8 +11,7 @@ from paraview.simple import (CellDatatoPointData, Contour,
                              OpenFOAMReader, Outline,
                              SaveScreenshot, Show, Text)
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "common"))
+sys.path.insert(0, os.path.join(os.environ["VHE_ROOT"], "tutorials", "common"))
 from whiteView import white_view  # noqa: E402
 
 foam, prefix = sys.argv[1:3]

@@ -2,7 +2,11 @@
 # Plots (gnuplot) and images (pvbatch) of the floating-disk case; called by
 # Allrun, can be rerun on its own.
 cd "$(dirname "$0")" || exit 1
-. ../common/functions.sh
+# the project's functions through the environment that Make/bashrc sets,
+# as OpenFOAM's tutorials reach RunFunctions: a copy of this tutorial runs
+# anywhere once "source <vheFoam>/Make/bashrc" is done
+[ -n "${VHE_ROOT:-}" ] || [ ! -f ../common/functions.sh ] || VHE_ROOT=$(cd ../.. && pwd)
+. "${VHE_ROOT:?source <vheFoam>/Make/bashrc first}/tutorials/common/functions.sh"
 d=cases/disk
 mkdir -p results
 
@@ -27,6 +31,6 @@ plot 'results/diskHeight.dat' u 1:2 w l lw 2 t 'vheFoam', \
      $interface w l dt 2 lw 2 t 'oil/water interface at rest'
 GP
 
-vhe_pvbatch results/log.pvbatch ../common/renderPhases.py "$d/disk.foam" results/scene \
+vhe_pvbatch results/log.pvbatch "$VHE_ROOT/tutorials/common/renderPhases.py" "$d/disk.foam" results/scene \
     alpha.water,alpha.oil,alpha.block 0 1 2 5 || exit 1
 echo "Results in $(pwd)/results: $(cd results && ls ./*.dat ./*.png | tr '\n' ' ')"

@@ -2,7 +2,11 @@
 # Summary table, plots (gnuplot) and images (pvbatch) of the periodic
 # channel cases in cases/*; called by Allrun, can be rerun on its own.
 cd "$(dirname "$0")" || exit 1
-. ../common/functions.sh
+# the project's functions through the environment that Make/bashrc sets,
+# as OpenFOAM's tutorials reach RunFunctions: a copy of this tutorial runs
+# anywhere once "source <vheFoam>/Make/bashrc" is done
+[ -n "${VHE_ROOT:-}" ] || [ ! -f ../common/functions.sh ] || VHE_ROOT=$(cd ../.. && pwd)
+. "${VHE_ROOT:?source <vheFoam>/Make/bashrc first}/tutorials/common/functions.sh"
 mkdir -p results
 
 python3 summary.py cases results || exit 1

@@ -10,8 +10,7 @@ from paraview.simple import (CellDatatoPointData, ColorBy, Contour,
                              GetScalarBar, OpenFOAMReader, SaveScreenshot,
                              Show, Slice, Text)
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "common"))
+sys.path.insert(0, os.path.join(os.environ["VHE_ROOT"], "tutorials", "common"))
 from whiteView import white_view  # noqa: E402
 
 foam, out = sys.argv[1:3]

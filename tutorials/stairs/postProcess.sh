@@ -2,7 +2,11 @@
 # Plots (gnuplot) and images (pvbatch) of the stairs case; called by
 # Allrun, can be rerun on its own.
 cd "$(dirname "$0")" || exit 1
-. ../common/functions.sh
+# the project's functions through the environment that Make/bashrc sets,
+# as OpenFOAM's tutorials reach RunFunctions: a copy of this tutorial runs
+# anywhere once "source <vheFoam>/Make/bashrc" is done
+[ -n "${VHE_ROOT:-}" ] || [ ! -f ../common/functions.sh ] || VHE_ROOT=$(cd ../.. && pwd)
+. "${VHE_ROOT:?source <vheFoam>/Make/bashrc first}/tutorials/common/functions.sh"
 d=cases/stairs
 mkdir -p results
 
@@ -20,6 +24,6 @@ set ylabel 'V(t)/V(0) - 1'; set title 'Phase volumes: relative drift'
 plot for [k=2:3] 'results/volumeDrift.dat' u 1:k w l lw 2 t word("water air", k - 1)
 GP
 
-vhe_pvbatch results/log.pvbatch ../common/renderPhases.py "$d/stairs.foam" results/scene \
+vhe_pvbatch results/log.pvbatch "$VHE_ROOT/tutorials/common/renderPhases.py" "$d/stairs.foam" results/scene \
     alpha.water 0 0.5 1 2 3 || exit 1
 echo "Results in $(pwd)/results: $(cd results && ls ./*.dat ./*.png | tr '\n' ' ')"
