@@ -18,6 +18,10 @@
 #include <float.h>
 #include <math.h>
 
+/* min and max without fmin/fmax's NaN rules (library calls at -O2) */
+#define MIN2(a, b) ((a) < (b) ? (a) : (b))
+#define MAX2(a, b) ((a) > (b) ? (a) : (b))
+
 /* V diag(f) V^T, upper triangle, V's columns the eigenvectors. */
 static void sym_from_eigen(const double V[9], const double f[3], double S[6])
 {
@@ -33,14 +37,120 @@ static void sym_from_eigen(const double V[9], const double f[3], double S[6])
     }
 }
 
+/*
+ * Cyclic Jacobi on the six entries of a symmetric 3x3 (Numerical Recipes'
+ * rotation formulas): eigenvalues in l, eigenvectors as the columns of V
+ * (row-major).  Stops once the off-diagonal part is below 1e-15 of the
+ * diagonal's (sums of squares 1e-30): the rotations' own round-off.
+ * About twice as fast as the general jacobi3 of symm.c, which updates all
+ * nine entries; log and exp of B call it twice per solid cell and step.
+ */
+static void sym_jacobi(const double S[6], double l[3], double V[9], int warm)
+{
+    /* a[p][q] of the symmetric matrix in the 6-entry layout */
+    static const int idx[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+    double a[6];
+    int sweep, k;
+
+    if (warm) {
+        /* start in the basis V (the last eigenvectors of this cell, made
+         * orthonormal again): a = V^T S V is nearly diagonal, and one or
+         * two sweeps finish it instead of four or five */
+        double *c0 = V, SV[9], n;
+        double c1[3], c2[3];
+        int i, j;
+        n = sqrt(V[0] * V[0] + V[3] * V[3] + V[6] * V[6]);
+        for (i = 0; i < 3; ++i) {
+            c0[3 * i] /= n;
+        }
+        n = V[0] * V[1] + V[3] * V[4] + V[6] * V[7];
+        for (i = 0; i < 3; ++i) {
+            c1[i] = V[3 * i + 1] - n * V[3 * i];
+        }
+        n = sqrt(c1[0] * c1[0] + c1[1] * c1[1] + c1[2] * c1[2]);
+        for (i = 0; i < 3; ++i) {
+            c1[i] /= n;
+        }
+        c2[0] = V[3] * c1[2] - V[6] * c1[1];
+        c2[1] = V[6] * c1[0] - V[0] * c1[2];
+        c2[2] = V[0] * c1[1] - V[3] * c1[0];
+        for (i = 0; i < 3; ++i) {
+            V[3 * i + 1] = c1[i];
+            V[3 * i + 2] = c2[i];
+        }
+        for (i = 0; i < 3; ++i) {
+            for (j = 0; j < 3; ++j) {
+                SV[3 * i + j] = S[idx[i][0]] * V[j] + S[idx[i][1]] * V[3 + j]
+                                + S[idx[i][2]] * V[6 + j];
+            }
+        }
+        for (k = 0; k < 6; ++k) {
+            static const int ii[6] = {0, 0, 0, 1, 1, 2};
+            static const int jj[6] = {0, 1, 2, 1, 2, 2};
+            a[k] = V[ii[k]] * SV[jj[k]] + V[3 + ii[k]] * SV[3 + jj[k]]
+                   + V[6 + ii[k]] * SV[6 + jj[k]];
+        }
+    } else {
+        for (k = 0; k < 6; ++k) {
+            a[k] = S[k];
+        }
+        for (k = 0; k < 9; ++k) {
+            V[k] = (k % 4 == 0) ? 1.0 : 0.0;
+        }
+    }
+    for (sweep = 0; sweep < 50; ++sweep) {
+        const double off = a[1] * a[1] + a[2] * a[2] + a[4] * a[4];
+        const double dia = a[0] * a[0] + a[3] * a[3] + a[5] * a[5];
+        int p;
+        if (off == 0.0 || off < 1e-30 * dia) {
+            break;
+        }
+        for (p = 0; p < 2; ++p) {
+            int q;
+            for (q = p + 1; q < 3; ++q) {
+                const int r = 3 - p - q;
+                const double apq = a[idx[p][q]];
+                double theta, t, c, sn, tau, g, h;
+                if (apq == 0.0) {
+                    continue;
+                }
+                theta = 0.5 * (a[idx[q][q]] - a[idx[p][p]]) / apq;
+                t = 1.0 / (fabs(theta) + sqrt(theta * theta + 1.0));
+                if (theta < 0.0) {
+                    t = -t;
+                }
+                c = 1.0 / sqrt(t * t + 1.0);
+                sn = t * c;
+                tau = sn / (1.0 + c);
+                a[idx[p][p]] -= t * apq;
+                a[idx[q][q]] += t * apq;
+                a[idx[p][q]] = 0.0;
+                g = a[idx[r][p]];
+                h = a[idx[r][q]];
+                a[idx[r][p]] = g - sn * (h + g * tau);
+                a[idx[r][q]] = h + sn * (g - h * tau);
+                for (k = 0; k < 3; ++k) {
+                    g = V[3 * k + p];
+                    h = V[3 * k + q];
+                    V[3 * k + p] = g - sn * (h + g * tau);
+                    V[3 * k + q] = h + sn * (g - h * tau);
+                }
+            }
+        }
+    }
+    l[0] = a[0]; l[1] = a[3]; l[2] = a[5];
+}
+
 static int is_diagonal(const double S[6])
 {
     return S[1] == 0.0 && S[2] == 0.0 && S[4] == 0.0;
 }
 
-int vhe_sym_log(const double S[6], double L[6])
+/* log S and exp S through the eigen-decomposition; V: the eigenvectors
+ * (in: a guess if warm, out: those of S) */
+static int sym_log_v(const double S[6], double L[6], double V[9], int warm)
 {
-    double l[3], V[9], f[3];
+    double l[3], f[3];
     int i, floored = 0;
 
     if (is_diagonal(S)) {
@@ -52,9 +162,12 @@ int vhe_sym_log(const double S[6], double L[6])
         }
         L[0] = f[0]; L[1] = 0.0; L[2] = 0.0;
         L[3] = f[1]; L[4] = 0.0; L[5] = f[2];
+        for (i = 0; i < 9; ++i) {
+            V[i] = (i % 4 == 0) ? 1.0 : 0.0;
+        }
         return floored;
     }
-    vhe_sym_eigen(S, l, V);
+    sym_jacobi(S, l, V, warm);
     for (i = 0; i < 3; ++i) {
         f[i] = l[i] > DBL_MIN ? log(l[i]) : log(DBL_MIN);
         floored += !(l[i] > DBL_MIN);
@@ -63,25 +176,40 @@ int vhe_sym_log(const double S[6], double L[6])
     return floored;
 }
 
-void vhe_sym_exp(const double S[6], double E[6])
+static void sym_exp_v(const double S[6], double E[6], double V[9], int warm)
 {
-    double l[3], V[9], f[3];
+    double l[3], f[3];
     int i;
 
     if (is_diagonal(S)) {
         E[0] = exp(S[0]); E[1] = 0.0; E[2] = 0.0;
         E[3] = exp(S[3]); E[4] = 0.0; E[5] = exp(S[5]);
+        for (i = 0; i < 9; ++i) {
+            V[i] = (i % 4 == 0) ? 1.0 : 0.0;
+        }
         return;
     }
-    vhe_sym_eigen(S, l, V);
+    sym_jacobi(S, l, V, warm);
     for (i = 0; i < 3; ++i) {
         f[i] = exp(l[i]);
     }
     sym_from_eigen(V, f, E);
 }
 
+int vhe_sym_log(const double S[6], double L[6])
+{
+    double V[9];
+    return sym_log_v(S, L, V, 0);
+}
+
+void vhe_sym_exp(const double S[6], double E[6])
+{
+    double V[9];
+    sym_exp_v(S, E, V, 0);
+}
+
 size_t vhe_logb_from_bstar(size_t n, const double *phis, const double *Bstar,
-                           double phis_min, double *Psi)
+                           double phis_min, double *Psi, double *V)
 {
     size_t c, bad = 0;
     int k;
@@ -94,7 +222,11 @@ size_t vhe_logb_from_bstar(size_t n, const double *phis, const double *Bstar,
             for (k = 0; k < 6; ++k) {
                 B[k] = r * Bstar[6 * c + k];
             }
-            bad += vhe_sym_log(B, P) != 0;
+            if (V) {
+                bad += sym_log_v(B, P, V + 9 * c, 1) != 0;
+            } else {
+                bad += vhe_sym_log(B, P) != 0;
+            }
         } else {
             P[0] = P[1] = P[2] = P[3] = P[4] = P[5] = 0.0;
         }
@@ -103,7 +235,7 @@ size_t vhe_logb_from_bstar(size_t n, const double *phis, const double *Bstar,
 }
 
 void vhe_bstar_from_logb(size_t n, const double *phis, const double *Psi,
-                         double phis_min, double *Bstar)
+                         double phis_min, double *Bstar, double *V)
 {
     size_t c;
     int k;
@@ -112,7 +244,11 @@ void vhe_bstar_from_logb(size_t n, const double *phis, const double *Psi,
         double *Bs = Bstar + 6 * c;
         if (phis[c] > phis_min) {
             const double r = sqrt(phis[c]);
-            vhe_sym_exp(Psi + 6 * c, Bs);
+            if (V) {
+                sym_exp_v(Psi + 6 * c, Bs, V + 9 * c, 1);
+            } else {
+                vhe_sym_exp(Psi + 6 * c, Bs);
+            }
             for (k = 0; k < 6; ++k) {
                 Bs[k] *= r;
             }
@@ -217,15 +353,20 @@ void vhe_lsq_grad_boundary(size_t nf, const int32_t *face_cells,
     }
 }
 
-void vhe_lsq_grad_finish(size_t n, const double *M, const double *b,
-                         double *G)
+void vhe_lsq_grad_finish(size_t n, double *M, double *b, double *G)
 {
     size_t c;
     int i, j, k;
 
     for (c = 0; c < n; ++c) {
-        const double *m = M + 6 * c;
+        double *m = M + 6 * c;
         const double tr = m[0] + m[3] + m[5];
+        if (!(tr > 0.0)) {
+            for (k = 0; k < 18; ++k) {
+                G[18 * c + k] = 0.0;   /* no neighbour: no gradient */
+            }
+            continue;
+        }
         /* directions without neighbours (2D's empty one, a cell with
          * neighbours on one line only) get no gradient: regularise by a
          * round-off fraction of the trace */
@@ -252,6 +393,13 @@ void vhe_lsq_grad_finish(size_t n, const double *M, const double *b,
                 }
                 G[18 * c + 6 * i + k] = g;
             }
+        }
+        /* consumed: ready for the next step without a pass over all cells */
+        for (k = 0; k < 6; ++k) {
+            m[k] = 0.0;
+        }
+        for (k = 0; k < 18; ++k) {
+            b[18 * c + k] = 0.0;
         }
     }
 }
@@ -383,8 +531,8 @@ void vhe_fct_extrema_init(size_t n, const double *phis0, const double *Xold,
                 lo = hi = Xold[6 * c + k];
             }
             if (m[c] > 0.0) {
-                lo = fmin(lo, X[6 * c + k]);
-                hi = fmax(hi, X[6 * c + k]);
+                lo = MIN2(lo, X[6 * c + k]);
+                hi = MAX2(hi, X[6 * c + k]);
             }
             Xmin[6 * c + k] = lo;
             Xmax[6 * c + k] = hi;
@@ -401,11 +549,14 @@ void vhe_fct_extrema_internal(size_t nf, const int32_t *owner,
 
     for (f = 0; f < nf; ++f) {
         const size_t o = 6 * (size_t)owner[f], nb = 6 * (size_t)neighbour[f];
+        if (Emin[o] == HUGE_VAL && Emin[nb] == HUGE_VAL) {
+            continue;   /* no solid on either side: nothing to bound */
+        }
         for (k = 0; k < 6; ++k) {
-            Xmin[o + k] = fmin(Xmin[o + k], Emin[nb + k]);
-            Xmax[o + k] = fmax(Xmax[o + k], Emax[nb + k]);
-            Xmin[nb + k] = fmin(Xmin[nb + k], Emin[o + k]);
-            Xmax[nb + k] = fmax(Xmax[nb + k], Emax[o + k]);
+            Xmin[o + k] = MIN2(Xmin[o + k], Emin[nb + k]);
+            Xmax[o + k] = MAX2(Xmax[o + k], Emax[nb + k]);
+            Xmin[nb + k] = MIN2(Xmin[nb + k], Emin[o + k]);
+            Xmax[nb + k] = MAX2(Xmax[nb + k], Emax[o + k]);
         }
     }
 }
@@ -420,10 +571,16 @@ void vhe_fct_extrema_boundary(size_t nf, const int32_t *face_cells,
     for (f = 0; f < nf; ++f) {
         const size_t o = 6 * (size_t)face_cells[f];
         for (k = 0; k < 6; ++k) {
-            Xmin[o + k] = fmin(Xmin[o + k], Emin_nb[6 * f + k]);
-            Xmax[o + k] = fmax(Xmax[o + k], Emax_nb[6 * f + k]);
+            Xmin[o + k] = MIN2(Xmin[o + k], Emin_nb[6 * f + k]);
+            Xmax[o + k] = MAX2(Xmax[o + k], Emax_nb[6 * f + k]);
         }
     }
+}
+
+static int is_zero6(const double *A)
+{
+    return A[0] == 0.0 && A[1] == 0.0 && A[2] == 0.0 && A[3] == 0.0
+           && A[4] == 0.0 && A[5] == 0.0;
 }
 
 /* A[f] enters the neighbour (sign +1) or leaves the owner (sign -1). */
@@ -449,6 +606,9 @@ void vhe_fct_sums_internal(size_t nf, const int32_t *owner,
 
     for (f = 0; f < nf; ++f) {
         const size_t o = 6 * (size_t)owner[f], nb = 6 * (size_t)neighbour[f];
+        if (is_zero6(A + 6 * f)) {
+            continue;
+        }
         fct_sum(A + 6 * f, -1.0, Pp + o, Pm + o);
         fct_sum(A + 6 * f, 1.0, Pp + nb, Pm + nb);
     }
@@ -473,6 +633,15 @@ void vhe_fct_ratios(size_t n, const double *m, const double *X,
     int k;
 
     for (c = 0; c < n; ++c) {
+        if (m[c] == 0.0) {
+            /* no solid content: no room, so no flux into it (none leaves
+             * it either: its gradient is 0) */
+            for (k = 0; k < 6; ++k) {
+                Rp[6 * c + k] = Rp[6 * c + k] > 0.0 ? 0.0 : 1.0;
+                Rm[6 * c + k] = Rm[6 * c + k] > 0.0 ? 0.0 : 1.0;
+            }
+            continue;
+        }
         for (k = 0; k < 6; ++k) {
             const size_t i = 6 * c + k;
             /* room above and below the local extrema, as content [m^3],
@@ -481,8 +650,8 @@ void vhe_fct_ratios(size_t n, const double *m, const double *X,
              * round-off fluxes would otherwise stop the antidiffusion of
              * the diagonal components it shares its limiter with */
             const double tiny = 1e-12 * m[c];
-            const double qp = m[c] * fmax(Xmax[i] - X[i], 0.0) + tiny;
-            const double qm = m[c] * fmax(X[i] - Xmin[i], 0.0) + tiny;
+            const double qp = m[c] * MAX2(Xmax[i] - X[i], 0.0) + tiny;
+            const double qm = m[c] * MAX2(X[i] - Xmin[i], 0.0) + tiny;
             Rp[i] = Rp[i] > qp ? qp / Rp[i] : 1.0;
             Rm[i] = Rm[i] > qm ? qm / Rm[i] : 1.0;
         }
@@ -507,13 +676,13 @@ static void fct_lambda(const double *A, const double *Rp_in,
     for (k = 0; k < 6; ++k) {
         lam[k] = 1.0;
         if (A[k] > 0.0) {
-            lam[k] = fmin(Rp_in[k], Rm_from[k]);
+            lam[k] = MIN2(Rp_in[k], Rm_from[k]);
         } else if (A[k] < 0.0) {
-            lam[k] = fmin(Rm_in[k], Rp_from[k]);
+            lam[k] = MIN2(Rm_in[k], Rp_from[k]);
         }
     }
     /* xx, yy, zz are components 0, 3, 5 */
-    lam[0] = lam[3] = lam[5] = fmin(lam[0], fmin(lam[3], lam[5]));
+    lam[0] = lam[3] = lam[5] = MIN2(lam[0], MIN2(lam[3], lam[5]));
 }
 
 void vhe_fct_apply_internal(size_t nf, const int32_t *owner,
@@ -527,6 +696,9 @@ void vhe_fct_apply_internal(size_t nf, const int32_t *owner,
         const size_t o = 6 * (size_t)owner[f], nb = 6 * (size_t)neighbour[f];
         const double *Af = A + 6 * f;
         double lam[6];
+        if (is_zero6(Af)) {
+            continue;
+        }
         fct_lambda(Af, Rp + nb, Rm + nb, Rp + o, Rm + o, lam);
         for (k = 0; k < 6; ++k) {
             mX[o + k] -= lam[k] * Af[k];
@@ -572,7 +744,7 @@ double vhe_bstar_unimodular(size_t n, const double *phis, double phis_min,
             B[k] = Bs[k] / r;
         }
         if (phis[c] > phis_solid) {
-            worst = fmax(worst, fabs(vhe_sym_det(B) - 1.0));
+            worst = MAX2(worst, fabs(vhe_sym_det(B) - 1.0));
         }
         vhe_sym_log(B, P);
         t = (P[0] + P[3] + P[5]) / 3.0;

@@ -156,12 +156,16 @@ void vhe_sym_exp(const double S[6], double E[6]);
  * neutral value a cell without solid lends to a vanishing solid flux).
  * Returns the number of cells whose B* was not positive definite.
  * vhe_bstar_from_logb is the inverse: B* = phi_s^(1/2) exp(Psi) where
- * phis > phis_min, else 0.
+ * phis > phis_min, else 0.  V (9 per cell, row-major, or NULL): each
+ * cell's last eigenvectors, the start of its eigen-decomposition and
+ * overwritten by the new ones (set to I before the first use); from one
+ * step to the next they change little, and the decompositions take one or
+ * two Jacobi sweeps instead of four or five.
  */
 size_t vhe_logb_from_bstar(size_t n, const double *phis, const double *Bstar,
-                           double phis_min, double *Psi);
+                           double phis_min, double *Psi, double *V);
 void vhe_bstar_from_logb(size_t n, const double *phis, const double *Psi,
-                         double phis_min, double *Bstar);
+                         double phis_min, double *Bstar, double *V);
 
 /*
  * B* of a field read from a file, made unimodular: where phis > phis_min,
@@ -190,7 +194,8 @@ double vhe_bstar_unimodular(size_t n, const double *phis, double phis_min,
  *    such neighbours has G = 0.  _internal and _boundary (coupled patches:
  *    delta = x_nb - x_owner, phis_nb and X_nb the neighbour's values)
  *    accumulate M (6 per cell) and b (18 per cell), starting at 0;
- *    _finish solves per cell.  Exact for a linear X.
+ *    _finish solves per cell and sets M and b back to 0 (ready for the
+ *    next use).  Exact for a linear X.
  * 3. Antidiffusive flux A[f] (6 per face, [m^3]) = a (X_f - X_up), X_f
  *    the QUICKEST face value (Leonard 1979) in MUSCL-Hancock form:
  *      X_f = X_up + (x_f - x_up - dt/2 U_up) . G_up
@@ -226,8 +231,7 @@ void vhe_lsq_grad_boundary(size_t nf, const int32_t *face_cells,
                            const double *phis_nb, double phis_grad,
                            const double *X, const double *X_nb, double *M,
                            double *b);
-void vhe_lsq_grad_finish(size_t n, const double *M, const double *b,
-                         double *G);
+void vhe_lsq_grad_finish(size_t n, double *M, double *b, double *G);
 void vhe_antidiffusive_internal(size_t nf, const int32_t *owner,
                                 const int32_t *neighbour, const double *a,
                                 const double *Sf, const double *delta,

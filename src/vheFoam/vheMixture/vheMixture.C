@@ -86,11 +86,26 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
         if (solid)
         {
             G = dimensionedScalar("G", dimPressure, pd).value();
-            if (G <= 0)
+            if (!(G > 0))
             {
                 FatalIOErrorInFunction(pd)
                     << "Shear modulus G of " << name
                     << " must be positive, got " << G << exit(FatalIOError);
+            }
+            // Not a stiffer body but an overflow: the elastic viscosity
+            // dt Ghat phi_s of the semi-implicit step enters the momentum
+            // matrix, and the linear solvers' arithmetic on its
+            // coefficients leaves double precision long before G does.
+            // No material comes near (diamond: 5e11 Pa).
+            const scalar Gmax = 1e20;
+            if (!(G <= Gmax))
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Shear modulus G of " << name << " is " << G
+                    << " Pa, above " << Gmax << " Pa: beyond any material,"
+                    << " and the semi-implicit elastic viscosity dt G"
+                    << " would overflow the momentum matrix"
+                    << exit(FatalIOError);
             }
         }
 
