@@ -3,7 +3,7 @@
 # the continuous run ends (disks in the channel, semi-implicit elasticity,
 # B*, alpha and U compared at the end).  The cases write 17 digits, so the
 # restart must continue exactly: bound 1e-12 of the field scale (measured
-# 5.6e-15 for B*, 1e-17 for U).  (With 8 digits B* differs by 2.5e-6 of
+# 1.7e-14 for B*, 1e-17 for U).  (With 8 digits B* differs by 2.5e-6 of
 # its scale at t = 0.6: the limiters of the transport are not smooth
 # functions of their input, and cells of little solid amplify it.)
 . "$(dirname "$0")/lib.sh"
