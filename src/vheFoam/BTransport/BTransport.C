@@ -58,7 +58,14 @@ Foam::BTransport::workspace& Foam::BTransport::work() const
 {
     workspace& w = ws_;
     const label nCells = mesh_.nCells(), nFaces = mesh_.nInternalFaces();
-    if (w.nCells == nCells && w.nFaces == nFaces && !mesh_.topoChanging())
+    // Made again on every rank together (it reduces): after a refinement
+    // only some ranks may have changed size
+    const bool remake = returnReduce
+    (
+        w.nCells != nCells || w.nFaces != nFaces || mesh_.topoChanging(),
+        orOp<bool>()
+    );
+    if (!remake)
     {
         return w;
     }
