@@ -135,11 +135,12 @@ size_t vhe_bdonor_finish(size_t n, const double *V, const double *phis0,
 /* --------------------------------------------- log-conformation of B */
 
 /*
- * The deformation is carried as Psi = log B (logb.c; its transport: transport.c).  For the
- * incompressible solid tr Psi = log det B = 0; every kernel below is
- * linear in Psi with one coefficient for all six components, so a
- * trace-free Psi stays trace-free and B = exp(Psi) has det B = 1 and is
- * symmetric positive definite by construction.
+ * The deformation is carried as Psi = log B (logb.c; its transport:
+ * transport.c).  For the incompressible solid tr Psi = log det B = 0;
+ * every kernel below is linear in Psi with one coefficient for the three
+ * diagonal components, so a trace-free Psi stays trace-free and
+ * B = exp(Psi) has det B = 1 and is symmetric positive definite by
+ * construction.
  *
  * vhe_sym_eigen: eigenvalues (unordered) and orthonormal eigenvectors
  * (columns of V, row-major) of a symmTensor, cyclic Jacobi.
