@@ -52,7 +52,8 @@ START_TEST(test_log_exp_round_trip)
         {
             const double nP = max_diff6(P, Z0);
             const double nB = fmax(fabs(B[0]), fmax(fabs(B[3]), fabs(B[5])));
-            const double tol = nP <= 1.0 ? 1e-13 : 1e-13 * nP * fmax(1.0, nB / 20.0);
+            const double tol =
+                nP <= 1.0 ? 1e-13 : 1e-13 * nP * fmax(1.0, nB / 20.0);
             ck_assert_msg(max_diff6(L, P) <= tol,
                           "log(exp(P)) - P: %g (|Psi| %g, |B| %g)",
                           max_diff6(L, P), nP, nB);
@@ -126,7 +127,8 @@ START_TEST(test_log_exp_warm_start)
         if (step < 200) {
             /* Psi = R diag(0.8, -0.3, -0.5) R^T, R turning about (1, 2, 3) */
             const double c = cos(t), sn = sin(t);
-            const double n[3] = {1 / sqrt(14.0), 2 / sqrt(14.0), 3 / sqrt(14.0)};
+            const double n[3] = {1 / sqrt(14.0), 2 / sqrt(14.0),
+                                 3 / sqrt(14.0)};
             const double d[3] = {0.8, -0.3, -0.5};
             double R[9];
             int i, j;
