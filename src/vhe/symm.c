@@ -244,70 +244,120 @@ void vhe_solid_diagnostics(size_t n, const double *phis, const double *Bstar,
     out[2] = detmax;
 }
 
-/*
- * Cyclic Jacobi eigen-decomposition of a symmetric 3x3 matrix A (row-major,
- * destroyed; its diagonal ends as the eigenvalues), V receives the
- * eigenvectors as columns.  Unconditionally robust, converges
- * quadratically (a few sweeps); its eigenvectors are orthonormal to
- * round-off, which the matrix log and exp of B need.
- */
-static void jacobi3(double *A, double *V)
+void vhe_sym_from_eigen(const double V[9], const double f[3], double S[6])
 {
-    int sweep, p, q, k;
+    static const int ii[6] = {0, 0, 0, 1, 1, 2};
+    static const int jj[6] = {0, 1, 2, 1, 2, 2};
+    int k;
 
-    for (k = 0; k < 9; ++k) {
-        V[k] = (k % 4 == 0) ? 1.0 : 0.0;
+    for (k = 0; k < 6; ++k) {
+        const int a = ii[k], b = jj[k];
+        S[k] = V[3 * a] * f[0] * V[3 * b]
+               + V[3 * a + 1] * f[1] * V[3 * b + 1]
+               + V[3 * a + 2] * f[2] * V[3 * b + 2];
+    }
+}
+
+/*
+ * Cyclic Jacobi on the six entries of a symmetric 3x3 (Numerical Recipes'
+ * rotation formulas; vhe.h).  Stops once the off-diagonal part is below
+ * 1e-15 of the diagonal's (sums of squares 1e-30): the rotations' own
+ * round-off.
+ */
+void vhe_sym_eigen(const double S[6], double l[3], double V[9], int warm)
+{
+    /* a[p][q] of the symmetric matrix in the 6-entry layout */
+    static const int idx[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+    double a[6];
+    int sweep, k;
+
+    if (warm) {
+        /* start in the basis V (the last eigenvectors of this cell, made
+         * orthonormal again): a = V^T S V is nearly diagonal, and one or
+         * two sweeps finish it instead of four or five */
+        double *c0 = V, SV[9], n;
+        double c1[3], c2[3];
+        int i, j;
+        n = sqrt(V[0] * V[0] + V[3] * V[3] + V[6] * V[6]);
+        for (i = 0; i < 3; ++i) {
+            c0[3 * i] /= n;
+        }
+        n = V[0] * V[1] + V[3] * V[4] + V[6] * V[7];
+        for (i = 0; i < 3; ++i) {
+            c1[i] = V[3 * i + 1] - n * V[3 * i];
+        }
+        n = sqrt(c1[0] * c1[0] + c1[1] * c1[1] + c1[2] * c1[2]);
+        for (i = 0; i < 3; ++i) {
+            c1[i] /= n;
+        }
+        c2[0] = V[3] * c1[2] - V[6] * c1[1];
+        c2[1] = V[6] * c1[0] - V[0] * c1[2];
+        c2[2] = V[0] * c1[1] - V[3] * c1[0];
+        for (i = 0; i < 3; ++i) {
+            V[3 * i + 1] = c1[i];
+            V[3 * i + 2] = c2[i];
+        }
+        for (i = 0; i < 3; ++i) {
+            for (j = 0; j < 3; ++j) {
+                SV[3 * i + j] = S[idx[i][0]] * V[j] + S[idx[i][1]] * V[3 + j]
+                                + S[idx[i][2]] * V[6 + j];
+            }
+        }
+        for (k = 0; k < 6; ++k) {
+            static const int ii[6] = {0, 0, 0, 1, 1, 2};
+            static const int jj[6] = {0, 1, 2, 1, 2, 2};
+            a[k] = V[ii[k]] * SV[jj[k]] + V[3 + ii[k]] * SV[3 + jj[k]]
+                   + V[6 + ii[k]] * SV[6 + jj[k]];
+        }
+    } else {
+        for (k = 0; k < 6; ++k) {
+            a[k] = S[k];
+        }
+        for (k = 0; k < 9; ++k) {
+            V[k] = (k % 4 == 0) ? 1.0 : 0.0;
+        }
     }
     for (sweep = 0; sweep < 50; ++sweep) {
-        const double off = A[1] * A[1] + A[2] * A[2] + A[5] * A[5];
-        const double dia = A[0] * A[0] + A[4] * A[4] + A[8] * A[8];
-        if (off == 0.0 || off < 1e-36 * dia) {
+        const double off = a[1] * a[1] + a[2] * a[2] + a[4] * a[4];
+        const double dia = a[0] * a[0] + a[3] * a[3] + a[5] * a[5];
+        int p;
+        if (off == 0.0 || off < 1e-30 * dia) {
             break;
         }
         for (p = 0; p < 2; ++p) {
+            int q;
             for (q = p + 1; q < 3; ++q) {
-                const double apq = A[3 * p + q];
-                double theta, t, c, s;
-
+                const int r = 3 - p - q;
+                const double apq = a[idx[p][q]];
+                double theta, t, c, sn, tau, g, h;
                 if (apq == 0.0) {
                     continue;
                 }
-                theta = (A[3 * q + q] - A[3 * p + p]) / (2.0 * apq);
-                t = (theta >= 0.0 ? 1.0 : -1.0)
-                    / (fabs(theta) + sqrt(theta * theta + 1.0));
+                theta = 0.5 * (a[idx[q][q]] - a[idx[p][p]]) / apq;
+                t = 1.0 / (fabs(theta) + sqrt(theta * theta + 1.0));
+                if (theta < 0.0) {
+                    t = -t;
+                }
                 c = 1.0 / sqrt(t * t + 1.0);
-                s = t * c;
-                /* A <- J^T A J with the rotation J in the (p,q) plane. */
+                sn = t * c;
+                tau = sn / (1.0 + c);
+                a[idx[p][p]] -= t * apq;
+                a[idx[q][q]] += t * apq;
+                a[idx[p][q]] = 0.0;
+                g = a[idx[r][p]];
+                h = a[idx[r][q]];
+                a[idx[r][p]] = g - sn * (h + g * tau);
+                a[idx[r][q]] = h + sn * (g - h * tau);
                 for (k = 0; k < 3; ++k) {
-                    const double akp = A[3 * k + p], akq = A[3 * k + q];
-                    A[3 * k + p] = c * akp - s * akq;
-                    A[3 * k + q] = s * akp + c * akq;
-                }
-                for (k = 0; k < 3; ++k) {
-                    const double apk = A[3 * p + k], aqk = A[3 * q + k];
-                    A[3 * p + k] = c * apk - s * aqk;
-                    A[3 * q + k] = s * apk + c * aqk;
-                }
-                A[3 * p + q] = A[3 * q + p] = 0.0;
-                for (k = 0; k < 3; ++k) {
-                    const double vkp = V[3 * k + p], vkq = V[3 * k + q];
-                    V[3 * k + p] = c * vkp - s * vkq;
-                    V[3 * k + q] = s * vkp + c * vkq;
+                    g = V[3 * k + p];
+                    h = V[3 * k + q];
+                    V[3 * k + p] = g - sn * (h + g * tau);
+                    V[3 * k + q] = h + sn * (g - h * tau);
                 }
             }
         }
     }
-}
-
-void vhe_sym_eigen(const double S[6], double lambda[3], double V[9])
-{
-    double A[9];
-
-    A[0] = S[0]; A[1] = S[1]; A[2] = S[2];
-    A[3] = S[1]; A[4] = S[3]; A[5] = S[4];
-    A[6] = S[2]; A[7] = S[4]; A[8] = S[5];
-    jacobi3(A, V);
-    lambda[0] = A[0]; lambda[1] = A[4]; lambda[2] = A[8];
+    l[0] = a[0]; l[1] = a[3]; l[2] = a[5];
 }
 
 size_t vhe_spd_repair(size_t n, const double *phis, double lambda_min,
@@ -318,8 +368,8 @@ size_t vhe_spd_repair(size_t n, const double *phis, double lambda_min,
     for (c = 0; c < n; ++c) {
         double *B = Bstar + 6 * c;
         const double floor_c = lambda_min * sqrt_phis(phis[c]);
-        double l[3], A[9], V[9], d[3];
-        int i, j;
+        double l[3], e[3], V[9], d[3];
+        int i;
 
         vhe_sym_eigenvalues(B, l);
         /*
@@ -331,24 +381,11 @@ size_t vhe_spd_repair(size_t n, const double *phis, double lambda_min,
                                                          fabs(l[2])))) {
             continue;   /* SPD enough (or NaN): leave bit-identical */
         }
-        A[0] = B[0]; A[1] = B[1]; A[2] = B[2];
-        A[3] = B[1]; A[4] = B[3]; A[5] = B[4];
-        A[6] = B[2]; A[7] = B[4]; A[8] = B[5];
-        jacobi3(A, V);
+        vhe_sym_eigen(B, e, V, 0);
         for (i = 0; i < 3; ++i) {
-            d[i] = A[4 * i] < floor_c ? floor_c : A[4 * i];
+            d[i] = e[i] < floor_c ? floor_c : e[i];
         }
-        /* B = V diag(d) V^T, upper triangle. */
-        {
-            static const int ii[6] = {0, 0, 0, 1, 1, 2};
-            static const int jj[6] = {0, 1, 2, 1, 2, 2};
-            for (j = 0; j < 6; ++j) {
-                const int a = ii[j], b = jj[j];
-                B[j] = V[3 * a] * d[0] * V[3 * b]
-                       + V[3 * a + 1] * d[1] * V[3 * b + 1]
-                       + V[3 * a + 2] * d[2] * V[3 * b + 2];
-            }
-        }
+        vhe_sym_from_eigen(V, d, B);
         ++changed;
     }
     return changed;

@@ -143,12 +143,18 @@ size_t vhe_bdonor_finish(size_t n, const double *V, const double *phis0,
  * construction.
  *
  * vhe_sym_eigen: eigenvalues (unordered) and orthonormal eigenvectors
- * (columns of V, row-major) of a symmTensor, cyclic Jacobi.
+ * (columns of V, row-major) of a symmTensor, cyclic Jacobi on its six
+ * entries; warm nonzero: V on entry is a guess (the last eigenvectors of
+ * a tensor that changed little), made orthonormal and used as the start,
+ * so one or two sweeps finish instead of four or five.
+ * vhe_sym_from_eigen: S = V diag(f) V^T.
  * vhe_sym_log: L = log S for S symmetric positive definite; eigenvalues
  * below DBL_MIN are taken as DBL_MIN, and the number of such is returned
  * (0 for a valid S).  vhe_sym_exp: E = exp S, any symmetric S.
  */
-void vhe_sym_eigen(const double S[6], double lambda[3], double V[9]);
+void vhe_sym_eigen(const double S[6], double lambda[3], double V[9],
+                   int warm);
+void vhe_sym_from_eigen(const double V[9], const double f[3], double S[6]);
 int vhe_sym_log(const double S[6], double L[6]);
 void vhe_sym_exp(const double S[6], double E[6]);
 

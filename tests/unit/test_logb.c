@@ -177,12 +177,11 @@ static void transport_1d(int n, double u, double dt, int high, double *X)
     const double dx = 1.0 / n;
     int32_t *own = malloc(n * sizeof *own), *nei = malloc(n * sizeof *nei);
     double *a = malloc(n * sizeof *a), *Sf = calloc(3 * n, sizeof *Sf);
-    double *w = malloc(n * sizeof *w), *Cf = calloc(3 * n, sizeof *Cf);
+    double *Cf = calloc(3 * n, sizeof *Cf);
     double *C = calloc(3 * n, sizeof *C), *U = calloc(3 * n, sizeof *U);
     double *V = malloc(n * sizeof *V), *phis = malloc(n * sizeof *phis);
     double *out = calloc(n, sizeof *out), *W = calloc(n, sizeof *W);
     double *S = calloc(6 * n, sizeof *S), *m = calloc(n, sizeof *m);
-    (void)w;
     double *XL = calloc(6 * n, sizeof *XL), *G = calloc(18 * n, sizeof *G);
     double *A = calloc(6 * n, sizeof *A), *Xmin = calloc(6 * n, sizeof *Xmin);
     double *Xmax = calloc(6 * n, sizeof *Xmax);
@@ -197,7 +196,6 @@ static void transport_1d(int n, double u, double dt, int high, double *X)
         nei[i] = (i + 1) % n;
         a[i] = u * dt;
         Sf[3 * i] = 1.0;
-        w[i] = 0.5;
         Cf[3 * i] = (i + 1) * dx;
         C[3 * i] = (i + 0.5) * dx;
         U[3 * i] = u;
@@ -235,7 +233,7 @@ static void transport_1d(int n, double u, double dt, int high, double *X)
         }
     }
     memcpy(X, XL, 6 * n * sizeof *X);
-    free(own); free(nei); free(a); free(Sf); free(w); free(Cf); free(C);
+    free(own); free(nei); free(a); free(Sf); free(Cf); free(C);
     free(U); free(V); free(phis); free(out); free(W); free(S); free(m);
     free(d0); free(XL); free(G); free(A); free(Xmin); free(Xmax); free(Emin);
     free(Emax); free(Rp); free(Rm);

@@ -133,6 +133,7 @@ void Foam::BTransport::advect
 void Foam::BTransport::donorSums
 (
     const volSymmTensorField& X0,
+    const scalarField& a,
     scalar deltaT,
     scalarField& out,
     scalarField& W,
@@ -140,7 +141,6 @@ void Foam::BTransport::donorSums
 ) const
 {
     const surfaceScalarField& aPhi = mixture_.alphaPhiSolid();
-    const scalarField a(deltaT*aPhi.primitiveField());
     out = 0;
     W = 0;
     S = Zero;
@@ -206,7 +206,11 @@ void Foam::BTransport::advectDonorB
 
     scalarField out(nCells), W(nCells);
     symmTensorField S(nCells);
-    donorSums(B0, deltaT, out, W, S);
+    donorSums
+    (
+        B0, scalarField(deltaT*mixture_.alphaPhiSolid().primitiveField()),
+        deltaT, out, W, S
+    );
     reportFlushed
     (
         vhe_bdonor_finish

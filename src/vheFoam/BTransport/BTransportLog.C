@@ -59,7 +59,7 @@ void Foam::BTransport::advectLog
         scalarField& out = w.out;
         scalarField& W = w.W;
         symmTensorField& S = w.S;
-        donorSums(Psi0, deltaT, out, W, S);
+        donorSums(Psi0, a, deltaT, out, W, S);
         reportFlushed
         (
             vhe_donor_finish

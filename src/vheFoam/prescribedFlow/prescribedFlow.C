@@ -74,7 +74,6 @@ void Foam::prescribedFlow::set
 
     // depth x (psi(b) - psi(a)), a and b the face's end points in the
     // x-y plane, ordered so that the right normal of a -> b is along S_f
-    const scalar time = t;
     auto psiFlux = [&](label facei, const vector& Sf)
     {
         const face& f = faces[facei];
@@ -94,8 +93,8 @@ void Foam::prescribedFlow::set
         }
         return mag(Sf)/mag(e)
            *(
-               vhe_flow_psi(&flow_, ab[1].v_, time)
-             - vhe_flow_psi(&flow_, ab[0].v_, time)
+               vhe_flow_psi(&flow_, ab[1].v_, t)
+             - vhe_flow_psi(&flow_, ab[0].v_, t)
             );
     };
 
@@ -117,7 +116,7 @@ void Foam::prescribedFlow::set
     vectorField& UI = U.primitiveFieldRef();
     forAll(UI, celli)
     {
-        vhe_flow_u(&flow_, mesh.C()[celli].v_, time, UI[celli].v_);
+        vhe_flow_u(&flow_, mesh.C()[celli].v_, t, UI[celli].v_);
     }
     U.correctBoundaryConditions();
 }
