@@ -80,6 +80,7 @@ int main(int argc, char *argv[])
 
         while (pimple.loop())
         {
+            #include "accelerationFlux.H"
             #include "alphaEqn.H"
             #include "BEqn.H"
 
