@@ -42,47 +42,51 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muEff
 }
 
 
-Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma
+Foam::tmp<Foam::volSymmTensorField> Foam::vheElasticity::explicitStress
 (
     const volVectorField& U,
-    const volScalarField& muEff,
     scalar deltaT
 ) const
 {
-    tmp<volSymmTensorField> sig;
-    if (backward_)
+    if (!backward_)
     {
-        // The stress of the new step's B*, B*^(n+1) = Bhat + tau (L B* +
-        // B* L^T): the part linear about phi_s^(1/2) I is the implicit
-        // viscosity muElastic, the rest, tau (L A + A L^T) with A = Bhat -
-        // phi_s^(1/2) I, is taken with the current velocity gradient (an
-        // O(dt^2) error per step, where linearising about I would leave
-        // O(dt) at finite strain)
-        symmTensorField Bs(predictorBstar());
-        const tensorField gradU
-        (
-            dev(velocityGradient(U, deltaT)().primitiveField())
-        );
-        const tensorField L(gradU.T());
-        const scalarField& phis = mixture_.phis().primitiveField();
-        const scalar tau = stressStep(deltaT);
-        forAll(Bs, celli)
-        {
-            if (phis[celli] <= mixture_.solidFractionMin()) continue;
-            const symmTensor A(Bs[celli] - sqrt(phis[celli])*I);
-            Bs[celli] += tau*twoSymm(L[celli] & A);
-        }
-        sig = stressOf(Bs);
+        return sigma();
     }
-    else
+    // The stress of the new step's B*, B*^(n+1) = Bhat + tau (L B* +
+    // B* L^T): the part linear about phi_s^(1/2) I is the implicit
+    // viscosity muElastic, the rest, tau (L A + A L^T) with A = Bhat -
+    // phi_s^(1/2) I, is taken with the current velocity gradient (an
+    // O(dt^2) error per step, where linearising about I would leave
+    // O(dt) at finite strain)
+    symmTensorField Bs(predictorBstar());
+    const tensorField gradU
+    (
+        dev(velocityGradient(U, deltaT)().primitiveField())
+    );
+    const tensorField L(gradU.T());
+    const scalarField& phis = mixture_.phis().primitiveField();
+    const scalar tau = stressStep(deltaT);
+    forAll(Bs, celli)
     {
-        sig = sigma();
+        if (phis[celli] <= mixture_.solidFractionMin()) continue;
+        const symmTensor A(Bs[celli] - sqrt(phis[celli])*I);
+        Bs[celli] += tau*twoSymm(L[celli] & A);
     }
+    return stressOf(Bs);
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma
+(
+    const volSymmTensorField& sig,
+    const volScalarField& muEff
+) const
+{
     if (stabilisation_ <= 0)
     {
         return fvc::div(sig, "div(sigma)");
     }
-    return fvc::surfaceIntegrate(mesh_.Sf() & faceStress(sig(), muEff));
+    return fvc::surfaceIntegrate(mesh_.Sf() & faceStress(sig, muEff));
 }
 
 

@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""Channel mesh study: results/table.csv and results/courant.csv.
+
+table.csv: cells, case, Q/Q_th, nu_m/nu0, steps, CPU seconds (from each
+mesh's summary.csv and the logs).  courant.csv: cells, case, the largest
+over unit time windows of (max Courant of the case)/(max Courant of the
+disk-free run) in the same window.
+"""
+import csv
+import os
+import re
+import sys
+
+cases_dir, results = sys.argv[1:3]
+COURANT = re.compile(r"^Courant Number mean: \S+ max: (\S+)")
+
+
+def courant_by_window(log):
+    """Largest Courant number per unit time window: {window: max}."""
+    out, t = {}, 0.0
+    for line in open(log):
+        if line.startswith("Time = "):
+            t = float(line.split()[2])
+        m = COURANT.match(line)
+        if m:
+            w = int(t)
+            out[w] = max(out.get(w, 0.0), float(m.group(1)))
+    return out
+
+
+rows, co_rows = [], []
+for n in sorted(os.listdir(cases_dir), key=int):
+    summary = os.path.join(results, n, "summary.csv")
+    if not os.path.exists(summary):
+        continue
+    ref = courant_by_window(os.path.join(cases_dir, n, "none", "log.vheFoam"))
+    for r in csv.DictReader(open(summary)):
+        case = r["case"]
+        log = os.path.join(cases_dir, n, case, "log.vheFoam")
+        text = open(log).read()
+        steps = text.count("\nTime = ")
+        cpu = re.findall(r"ExecutionTime = (\S+) s", text)
+        rows.append([n, case] + [r[k] for k in r if k != "case"]
+                    + [steps, cpu[-1] if cpu else ""])
+        if case != "none":
+            co = courant_by_window(log)
+            ratio = max(co[w]/ref[w] for w in co if w in ref and ref[w] > 0)
+            co_rows.append([n, case, "%.3g" % ratio])
+    header = ["cells", "case"] + [k for k in r if k != "case"] + ["steps", "cpuSeconds"]
+
+with open(os.path.join(results, "table.csv"), "w") as f:
+    w = csv.writer(f)
+    w.writerow(header)
+    w.writerows(rows)
+with open(os.path.join(results, "courant.csv"), "w") as f:
+    w = csv.writer(f)
+    w.writerow(["cells", "case", "maxCourantRatioToDiskFree"])
+    w.writerows(co_rows)
+for path in ("table.csv", "courant.csv"):
+    print(open(os.path.join(results, path)).read())
