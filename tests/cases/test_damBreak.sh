@@ -6,8 +6,9 @@
 #    sub-cycles per step,
 #  - the liquid level starts at the dam depth (0.8) on the left wall,
 #  - 2 ranks (decomposePar, mpirun) agree with serial with tight solver
-#    tolerances: alpha to 1e-8, U to 1e-6 relative (measured: 1e-10 and
-#    3e-8, the 8-digit write precision), liquid level to 1e-5 relative.
+#    tolerances: alpha to 1.5e-8 (one unit of the 8th written digit: a
+#    value that rounds the other way; measured 1e-8), U to 1e-6 relative
+#    (measured 2e-8, the write precision), liquid level to 1e-5 relative.
 . "$(dirname "$0")/lib.sh"
 
 ser="$WORK/serial" par="$WORK/parallel"
@@ -15,7 +16,7 @@ sceneCase damBreakSpheres "$ser" n1=21 n2=10 n3=10 endTime=0.3 writeInterval=0.3
     GperRho=10 || { fail setup "$ser"; finish; }
 # tight pressure and velocity solves, so that serial and parallel differ by
 # round-off rather than by the solvers' relTol
-sed -i 's/relTol          0.05;/relTol 0;/; s/tolerance       1e-7;/tolerance 1e-11;/' \
+sed -i 's/relTol          0.05;/relTol 0;/g; s/tolerance       1e-7;/tolerance 1e-11;/g' \
     "$ser/system/fvSolution"
 run "$ser" setFields && run "$ser" setBodies \
     || { fail setup "$ser"; finish; }
@@ -51,7 +52,7 @@ run "$par" mpirun -np 2 vheFoam -parallel || fail parallelRun "$par/log.mpirun"
 run "$par" reconstructPar -latestTime || fail reconstructPar "$par/log.reconstructPar"
 
 read -r d m <<< "$(maxFieldDiff "$ser" "$par" 0.3 alpha.liquid)"
-check parallelAlpha "$d < 1e-8" "max |alpha.liquid serial - parallel| = $d at t = 0.3"
+check parallelAlpha "$d < 1.5e-8" "max |alpha.liquid serial - parallel| = $d at t = 0.3"
 read -r d m <<< "$(maxFieldDiff "$ser" "$par" 0.3 U)"
 check parallelU "$d < 1e-6*$m" "max |U serial - parallel| = $d (max |U| $m) at t = 0.3"
 d=$(paste <(awk '!/^#/{print $2}' "$hl") <(awk '!/^#/{print $2}' "$par/postProcessing/liquidLevel/0/liquidLevel.dat") \
