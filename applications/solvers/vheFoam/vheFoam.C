@@ -9,7 +9,9 @@ Description
 
     Phases by VOF (MULES, limitSum), B* = phi_s^(1/2) B transported with the
     upper-convected equation, elastic stress Ghat phi_s^(1/2) dev(B*) in the
-    momentum equation, PIMPLE p_rgh pressure-velocity coupling as interFoam.
+    momentum equation, and an incremental pressure-correction projection
+    of the predicted velocity with the coefficient dt/rho (p_rgh and its
+    boundary conditions as interFoam), stable at any viscous number.
     The mesh may be refined and unrefined at run time (dynamicRefineFvMesh,
     constant/dynamicMeshDict) near every interface between phases.
     A case with one fluid and no solid is plain incompressible flow: the
