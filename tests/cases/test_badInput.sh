@@ -128,7 +128,7 @@ dynamicRefineFvMeshCoeffs
 }
 DICT
 }
-allFluxes="(phi none) (alphaPhiSolid none) (rhoPhi none) (ghf none)"
+allFluxes="(phi none) (alphaPhiSolid none) (rhoPhi none) (ghf none) (accelerationFlux none)"
 d=$(variant refineOnUnknownField); writeRefinement "$d" alpha.gas "$allFluxes"
 expectFatal refineOnUnknownField "$d" vheFoam "field alpha.gas is not a volScalarField" dynamicMeshDict
 d=$(variant refineMissingFlux); writeRefinement "$d" interfaceIndicator "(phi none)"

@@ -26,6 +26,7 @@ Description
 #include "fvOptions.H"
 #include "clockTime.H"
 #include "profiling.H"
+#include "linear.H"
 #include "vheMixture.H"
 #include "vheElasticity.H"
 #include "wallShearCorrection.H"
@@ -82,7 +83,6 @@ int main(int argc, char *argv[])
 
         while (pimple.loop())
         {
-            #include "accelerationFlux.H"
             #include "alphaEqn.H"
             #include "BEqn.H"
 
