@@ -244,6 +244,27 @@ void vhe_solid_diagnostics(size_t n, const double *phis, const double *Bstar,
     out[2] = detmax;
 }
 
+void vhe_devb_mag(size_t n, const double *phis, const double *Bstar,
+                  double phis_solid, double *out)
+{
+    size_t c;
+    int i;
+
+    for (c = 0; c < n; ++c) {
+        const double sp = sqrt_phis(phis[c]);
+        double B[6];
+
+        out[c] = 0.0;
+        if (!(phis[c] > phis_solid) || !(sp > 0.0)) {
+            continue;
+        }
+        for (i = 0; i < 6; ++i) {
+            B[i] = Bstar[6 * c + i] / sp;
+        }
+        out[c] = mag_dev(B);
+    }
+}
+
 void vhe_sym_from_eigen(const double V[9], const double f[3], double S[6])
 {
     static const int ii[6] = {0, 0, 0, 1, 1, 2};

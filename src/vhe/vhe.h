@@ -303,6 +303,13 @@ void vhe_solid_diagnostics(size_t n, const double *phis, const double *Bstar,
                            double phis_solid, double out[3]);
 
 /*
+ * |dev(B)| (Frobenius norm) per cell, B = B* / phi_s^(1/2), where
+ * phis > phis_solid; 0 elsewhere.
+ */
+void vhe_devb_mag(size_t n, const double *phis, const double *Bstar,
+                  double phis_solid, double *out);
+
+/*
  * Repairs B* in place where it is not positive definite: eigenvalues below
  * lambda_min phi_s^(1/2) are raised to it.  Returns the number of cells
  * changed.  Used only when the case asks for it (never silent).
@@ -512,6 +519,27 @@ struct vhe_flow {
 double vhe_flow_psi(const struct vhe_flow *f, const double x[3], double t);
 void vhe_flow_u(const struct vhe_flow *f, const double x[3], double t,
                 double u[3]);
+
+/* ------------------------------------------- one body's motion and shape */
+
+/*
+ * From the moments of one body about its centroid (bodies.c), with
+ * weights w = alpha V and r the position relative to the centroid:
+ *   J = sum w r r^T (symmTensor) [m^5], L = sum w r x (u - u_c) [m^5/s].
+ * normal: the empty direction (0, 1, 2) of a 2D case, or -1 in 3D.
+ *
+ * vhe_body_omega: the rigid-body angular velocity omega [rad/s] that
+ * carries L, I omega = L with I = tr(J) 1 - J (in 2D the normal
+ * component only, L_n / I_nn); 0 where I is singular.
+ * vhe_body_shape: Taylor deformation D = (a - b)/(a + b) of the
+ * equivalent ellipse (2D, in plane) or ellipsoid (3D), a and b the
+ * largest and smallest semi-axes (proportional to the square roots of
+ * the eigenvalues of J); axis: the unit major axis, its largest
+ * component positive.  D = 0 for a circle or sphere, -> 1 for a line.
+ */
+void vhe_body_omega(const double J[6], const double L[3], int normal,
+                    double omega[3]);
+double vhe_body_shape(const double J[6], int normal, double axis[3]);
 
 #ifdef __cplusplus
 }

@@ -1382,6 +1382,7 @@ static Suite *exact_suite(void)
 /* ================================================================ main */
 
 Suite *logb_suite(void);   /* test_logb.c */
+Suite *bodies_suite(void); /* test_bodies.c */
 
 int main(void)
 {
@@ -1394,6 +1395,7 @@ int main(void)
     srunner_add_suite(sr, packing_suite());
     srunner_add_suite(sr, exact_suite());
     srunner_add_suite(sr, logb_suite());
+    srunner_add_suite(sr, bodies_suite());
     srunner_run_all(sr, CK_NORMAL);
     nf = srunner_ntests_failed(sr);
     srunner_free(sr);

@@ -1,0 +1,106 @@
+/*
+ * bodies.c -- the motion and shape of one body from its moments, for the
+ * per-body output (the bodies function object).  The framework sums over
+ * the body's cells, with weights w = alpha V (the body's volume in the
+ * cell) and r the position relative to the body's centroid:
+ *   J = sum w r r^T              second moment of volume [m^5] (6 entries)
+ *   L = sum w r x (u - u_c)      angular momentum per unit density [m^5/s]
+ */
+#include <math.h>
+
+#include "vhe.h"
+
+/* Components of a symmTensor (xx xy xz yy yz zz) */
+static double sym_at(const double S[6], int i, int j)
+{
+    static const int idx[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+    return S[idx[i][j]];
+}
+
+void vhe_body_omega(const double J[6], const double L[3], int normal,
+                    double omega[3])
+{
+    const double trJ = J[0] + J[3] + J[5];
+    int i, j;
+
+    omega[0] = omega[1] = omega[2] = 0.0;
+    if (normal >= 0 && normal < 3) {
+        /* 2D: rotation about the normal only, I_nn = tr J - J_nn */
+        const double Inn = trJ - sym_at(J, normal, normal);
+        if (Inn > 0.0) {
+            omega[normal] = L[normal] / Inn;
+        }
+        return;
+    }
+    {
+        /* 3D: I omega = L, I = tr(J) 1 - J, by Cramer's rule */
+        double I[3][3], det, inv[3][3];
+        for (i = 0; i < 3; ++i) {
+            for (j = 0; j < 3; ++j) {
+                I[i][j] = (i == j ? trJ : 0.0) - sym_at(J, i, j);
+            }
+        }
+        inv[0][0] = I[1][1] * I[2][2] - I[1][2] * I[2][1];
+        inv[0][1] = I[0][2] * I[2][1] - I[0][1] * I[2][2];
+        inv[0][2] = I[0][1] * I[1][2] - I[0][2] * I[1][1];
+        inv[1][0] = I[1][2] * I[2][0] - I[1][0] * I[2][2];
+        inv[1][1] = I[0][0] * I[2][2] - I[0][2] * I[2][0];
+        inv[1][2] = I[0][2] * I[1][0] - I[0][0] * I[1][2];
+        inv[2][0] = I[1][0] * I[2][1] - I[1][1] * I[2][0];
+        inv[2][1] = I[0][1] * I[2][0] - I[0][0] * I[2][1];
+        inv[2][2] = I[0][0] * I[1][1] - I[0][1] * I[1][0];
+        det = I[0][0] * inv[0][0] + I[0][1] * inv[1][0]
+            + I[0][2] * inv[2][0];
+        if (!(fabs(det) > 0.0)) {
+            return;
+        }
+        for (i = 0; i < 3; ++i) {
+            omega[i] = (inv[i][0] * L[0] + inv[i][1] * L[1]
+                        + inv[i][2] * L[2]) / det;
+        }
+    }
+}
+
+double vhe_body_shape(const double J[6], int normal, double axis[3])
+{
+    double lmax, lmin, a, b;
+    int k, big = 0;
+
+    axis[0] = axis[1] = axis[2] = 0.0;
+    if (normal >= 0 && normal < 3) {
+        /* 2D: the in-plane 2x2 block, closed form */
+        const int p = (normal + 1) % 3, q = (normal + 2) % 3;
+        const double xx = sym_at(J, p, p), yy = sym_at(J, q, q);
+        const double xy = sym_at(J, p, q);
+        const double m = 0.5 * (xx + yy);
+        const double h = sqrt(0.25 * (xx - yy) * (xx - yy) + xy * xy);
+        const double th = 0.5 * atan2(2.0 * xy, xx - yy);
+        lmax = m + h;
+        lmin = m - h;
+        axis[p] = cos(th);
+        axis[q] = sin(th);
+    } else {
+        double l[3], V[9];
+        int imax = 0, imin = 0;
+        vhe_sym_eigen(J, l, V, 0);
+        for (k = 1; k < 3; ++k) {
+            if (l[k] > l[imax]) imax = k;
+            if (l[k] < l[imin]) imin = k;
+        }
+        lmax = l[imax];
+        lmin = l[imin];
+        for (k = 0; k < 3; ++k) {
+            axis[k] = V[3 * k + imax];
+        }
+    }
+    /* the sign: the axis' largest component positive */
+    for (k = 1; k < 3; ++k) {
+        if (fabs(axis[k]) > fabs(axis[big]) + 1e-12) big = k;
+    }
+    if (axis[big] < 0.0) {
+        for (k = 0; k < 3; ++k) axis[k] = -axis[k];
+    }
+    a = sqrt(fmax(lmax, 0.0));
+    b = sqrt(fmax(lmin, 0.0));
+    return a + b > 0.0 ? (a - b) / (a + b) : 0.0;
+}

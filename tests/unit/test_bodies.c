@@ -1,0 +1,143 @@
+/*
+ * test_bodies.c -- unit tests of one body's motion and shape from its
+ * moments (bodies.c) and of the per-cell |dev B| (symm.c).
+ */
+#include <check.h>
+#include <math.h>
+
+#include "vhe.h"
+
+#define PI 3.14159265358979323846
+
+/* Moments J and L of a uniform ellipse (2D, in x-y) with semi-axes a, b,
+ * major axis at angle th, in solid rotation omega, summed over an n x n
+ * grid of cells of the bounding box (w = cell area inside). */
+static void ellipse_moments(double a, double b, double th, double omega,
+                            int n, double J[6], double L[3])
+{
+    const double R = a > b ? a : b, h = 2.0 * R / n;
+    const double c = cos(th), s = sin(th);
+    int i, j, k;
+
+    for (k = 0; k < 6; ++k) J[k] = 0.0;
+    L[0] = L[1] = L[2] = 0.0;
+    for (i = 0; i < n; ++i) {
+        for (j = 0; j < n; ++j) {
+            const double x = -R + (i + 0.5) * h, y = -R + (j + 0.5) * h;
+            const double xe = c * x + s * y, ye = -s * x + c * y;
+            const double ux = -omega * y, uy = omega * x;
+            double w;
+            if (xe * xe / (a * a) + ye * ye / (b * b) > 1.0) continue;
+            w = h * h;
+            J[0] += w * x * x;
+            J[1] += w * x * y;
+            J[3] += w * y * y;
+            L[2] += w * (x * uy - y * ux);
+        }
+    }
+}
+
+START_TEST(test_omega_2d)
+{
+    double J[6], L[3], om[3];
+    ellipse_moments(0.1, 0.05, 0.3, 2.5, 200, J, L);
+    vhe_body_omega(J, L, 2, om);
+    ck_assert_double_eq_tol(om[2], 2.5, 1e-12);
+    ck_assert_double_eq(om[0], 0.0);
+    ck_assert_double_eq(om[1], 0.0);
+}
+END_TEST
+
+START_TEST(test_omega_3d)
+{
+    /* eight points of a box in solid rotation about (1, 2, 3) */
+    const double w0[3] = {1.0, 2.0, 3.0};
+    double J[6] = {0, 0, 0, 0, 0, 0}, L[3] = {0, 0, 0}, om[3];
+    int i;
+    for (i = 0; i < 8; ++i) {
+        const double r[3] = {(i & 1) ? 0.3 : -0.3, (i & 2) ? 0.2 : -0.2,
+                             (i & 4) ? 0.1 : -0.1};
+        const double u[3] = {w0[1] * r[2] - w0[2] * r[1],
+                             w0[2] * r[0] - w0[0] * r[2],
+                             w0[0] * r[1] - w0[1] * r[0]};
+        J[0] += r[0] * r[0]; J[1] += r[0] * r[1]; J[2] += r[0] * r[2];
+        J[3] += r[1] * r[1]; J[4] += r[1] * r[2]; J[5] += r[2] * r[2];
+        L[0] += r[1] * u[2] - r[2] * u[1];
+        L[1] += r[2] * u[0] - r[0] * u[2];
+        L[2] += r[0] * u[1] - r[1] * u[0];
+    }
+    vhe_body_omega(J, L, -1, om);
+    for (i = 0; i < 3; ++i) {
+        ck_assert_double_eq_tol(om[i], w0[i], 1e-12);
+    }
+}
+END_TEST
+
+START_TEST(test_shape_2d)
+{
+    /* D = (a - b)/(a + b) and the major axis of a resolved ellipse */
+    const double a = 0.1, b = 0.06, th = 0.4;
+    double J[6], L[3], ax[3];
+    double D;
+    ellipse_moments(a, b, th, 0.0, 400, J, L);
+    D = vhe_body_shape(J, 2, ax);
+    ck_assert_double_eq_tol(D, (a - b) / (a + b), 2e-3);
+    ck_assert_double_eq_tol(ax[0], cos(th), 1e-3);
+    ck_assert_double_eq_tol(ax[1], sin(th), 1e-3);
+    ck_assert_double_eq(ax[2], 0.0);
+    /* a circle: D = 0 */
+    ellipse_moments(0.1, 0.1, 0.0, 0.0, 400, J, L);
+    ck_assert_double_le(vhe_body_shape(J, 2, ax), 1e-3);
+    /* the axis' sign: at angle -th the largest component is positive */
+    ellipse_moments(a, b, PI - th, 0.0, 400, J, L);
+    vhe_body_shape(J, 2, ax);
+    ck_assert_double_gt(ax[0], 0.0);
+    ck_assert_double_eq_tol(ax[1], -sin(th), 1e-3);
+}
+END_TEST
+
+START_TEST(test_shape_3d)
+{
+    /* a uniform ellipsoid's J is diag(a^2, b^2, c^2) V/5: D from the
+     * largest and smallest semi-axes, the major axis along y here */
+    const double J[6] = {0.04, 0.0, 0.0, 0.09, 0.0, 0.01};
+    double ax[3];
+    const double D = vhe_body_shape(J, -1, ax);
+    ck_assert_double_eq_tol(D, (0.3 - 0.1) / (0.3 + 0.1), 1e-12);
+    ck_assert_double_eq_tol(fabs(ax[1]), 1.0, 1e-12);
+    ck_assert_double_gt(ax[1], 0.0);
+}
+END_TEST
+
+START_TEST(test_devb_mag)
+{
+    /* simple shear B = [[1+g^2, g, 0], [g, 1, 0], [0, 0, 1]], phi 0.25 */
+    const double g = 0.5, phis[2] = {0.25, 0.01};
+    double Bs[12], out[2], tr, d[3];
+    int k;
+    const double B[6] = {1.0 + g * g, g, 0.0, 1.0, 0.0, 1.0};
+    for (k = 0; k < 6; ++k) {
+        Bs[k] = 0.5 * B[k];
+        Bs[6 + k] = 0.1 * B[k];
+    }
+    vhe_devb_mag(2, phis, Bs, 0.1, out);
+    tr = (B[0] + B[3] + B[5]) / 3.0;
+    d[0] = B[0] - tr; d[1] = B[3] - tr; d[2] = B[5] - tr;
+    ck_assert_double_eq_tol(out[0], sqrt(d[0] * d[0] + d[1] * d[1]
+                            + d[2] * d[2] + 2.0 * g * g), 1e-14);
+    ck_assert_double_eq(out[1], 0.0);
+}
+END_TEST
+
+Suite *bodies_suite(void)
+{
+    Suite *s = suite_create("bodies");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, test_omega_2d);
+    tcase_add_test(tc, test_omega_3d);
+    tcase_add_test(tc, test_shape_2d);
+    tcase_add_test(tc, test_shape_3d);
+    tcase_add_test(tc, test_devb_mag);
+    suite_add_tcase(s, tc);
+    return s;
+}
