@@ -5,7 +5,6 @@
 #include "bodies.H"
 #include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
-#include "coupledPolyPatch.H"
 #include "ListOps.H"
 #include "vheMixture.H"
 
@@ -50,20 +49,6 @@ void Foam::functionObjects::bodies::writeFileHeader(Ostream& os)
 }
 
 
-Foam::vector Foam::functionObjects::bodies::nearestImage(const vector& d) const
-{
-    vector r(d);
-    for (direction i = 0; i < vector::nComponents; ++i)
-    {
-        if (period_[i] > 0)
-        {
-            r[i] -= period_[i]*std::floor(r[i]/period_[i] + 0.5);
-        }
-    }
-    return r;
-}
-
-
 Foam::functionObjects::bodies::bodies
 (
     const word& name,
@@ -73,28 +58,13 @@ Foam::functionObjects::bodies::bodies
 :
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
-    threshold_(0.5),
+    threshold_(dict.getOrDefault<scalar>("threshold", 0.5)),
+    regions_(mesh_, threshold_),
     last_(),
     lastTime_(0),
-    nextId_(0),
-    period_(Zero)
+    nextId_(0)
 {
     read(dict);
-
-    // Translational cyclics: the period along each direction
-    for (const polyPatch& pp : mesh_.boundaryMesh())
-    {
-        if (isA<coupledPolyPatch>(pp))
-        {
-            const coupledPolyPatch& cpp = refCast<const coupledPolyPatch>(pp);
-            if (cpp.separated() && cpp.separation().size())
-            {
-                period_ = max(period_, cmptMag(cpp.separation()[0]));
-            }
-        }
-    }
-    reduce(period_, maxOp<vector>());
-
     writeFileHeader(file());
 }
 
@@ -110,6 +80,7 @@ bool Foam::functionObjects::bodies::read(const dictionary& dict)
             << "threshold must lie in (0, 1), got " << threshold_
             << exit(FatalIOError);
     }
+    regions_.setThreshold(threshold_);
     return true;
 }
 

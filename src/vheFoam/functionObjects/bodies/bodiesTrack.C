@@ -80,7 +80,7 @@ void Foam::functionObjects::bodies::number(List<body>& found)
             if (found[i].material != last_[j].material) continue;
             const scalar d = mag
             (
-                nearestImage
+                regions_.nearestImage
                 (
                     found[i].centroid - last_[j].centroid - dt*last_[j].U
                 )
@@ -132,7 +132,7 @@ void Foam::functionObjects::bodies::gaps
     {
         for (const point& p : surface[i])
         {
-            rad[i] = max(rad[i], mag(nearestImage(p - found[i].centroid)));
+            rad[i] = max(rad[i], mag(regions_.nearestImage(p - found[i].centroid)));
         }
     }
     scalarList gap(found.size(), GREAT);
@@ -141,7 +141,7 @@ void Foam::functionObjects::bodies::gaps
         for (label j = i + 1; j < found.size(); ++j)
         {
             const scalar lower =
-                mag(nearestImage(found[i].centroid - found[j].centroid))
+                mag(regions_.nearestImage(found[i].centroid - found[j].centroid))
               - rad[i] - rad[j];
             if (lower >= gap[i] && lower >= gap[j]) continue;
             scalar g = GREAT;
@@ -149,7 +149,7 @@ void Foam::functionObjects::bodies::gaps
             {
                 for (const point& q : surface[j])
                 {
-                    g = min(g, magSqr(nearestImage(p - q)));
+                    g = min(g, magSqr(regions_.nearestImage(p - q)));
                 }
             }
             g = std::sqrt(g);

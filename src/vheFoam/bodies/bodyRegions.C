@@ -1,0 +1,288 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: the bodies of one material's phase fraction
+\*---------------------------------------------------------------------------*/
+
+#include "bodyRegions.H"
+#include "volFields.H"
+#include "regionSplit.H"
+#include "syncTools.H"
+#include "coupledPolyPatch.H"
+#include "mathematicalConstants.H"
+
+namespace
+{
+    //- Appends the other processor's list
+    struct appendEqOp
+    {
+        void operator()
+        (
+            Foam::List<Foam::point>& x,
+            const Foam::List<Foam::point>& y
+        ) const
+        {
+            x.append(y);
+        }
+    };
+
+    //- Which boundary faces are coupled (processor, cyclic)
+    Foam::boolList coupledFaces(const Foam::fvMesh& mesh)
+    {
+        Foam::boolList coupled(mesh.nBoundaryFaces(), false);
+        for (const Foam::polyPatch& pp : mesh.boundaryMesh())
+        {
+            if (pp.coupled())
+            {
+                Foam::SubList<bool>
+                (
+                    coupled, pp.size(), pp.start() - mesh.nInternalFaces()
+                ) = true;
+            }
+        }
+        return coupled;
+    }
+}
+
+
+Foam::bodyRegions::bodyRegions(const fvMesh& mesh, const scalar threshold)
+:
+    mesh_(mesh),
+    threshold_(threshold),
+    period_(Zero),
+    normal_(-1)
+{
+    // Translational cyclics: the period along each direction
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (isA<coupledPolyPatch>(pp))
+        {
+            const coupledPolyPatch& cpp = refCast<const coupledPolyPatch>(pp);
+            if (cpp.separated() && cpp.separation().size())
+            {
+                period_ = max(period_, cmptMag(cpp.separation()[0]));
+            }
+        }
+    }
+    reduce(period_, maxOp<vector>());
+
+    if (mesh_.nGeometricD() == 2)
+    {
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (mesh_.geometricD()[d] == -1) normal_ = d;
+        }
+    }
+}
+
+
+Foam::vector Foam::bodyRegions::nearestImage(const vector& d) const
+{
+    vector r(d);
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        if (period_[i] > 0)
+        {
+            r[i] -= period_[i]*std::floor(r[i]/period_[i] + 0.5);
+        }
+    }
+    return r;
+}
+
+
+void Foam::bodyRegions::find(const scalarField& a)
+{
+    const labelUList& own = mesh_.faceOwner();
+    const labelUList& nei = mesh_.faceNeighbour();
+    const label nInt = mesh_.nInternalFaces();
+    const vectorField& C = mesh_.C().primitiveField();
+    const scalarField& V = mesh_.V();
+    const boolList coupled(coupledFaces(mesh_));
+
+    scalarField aNbr;
+    syncTools::swapBoundaryCellList(mesh_, a, aNbr);
+
+    // Regions of the cells above threshold, cut off from the rest
+    boolList blocked(mesh_.nFaces(), false);
+    for (label f = 0; f < nInt; ++f)
+    {
+        blocked[f] = (a[own[f]] > threshold_) != (a[nei[f]] > threshold_);
+    }
+    forAll(coupled, i)
+    {
+        const label f = nInt + i;
+        blocked[f] =
+            coupled[i] && (a[own[f]] > threshold_) != (aNbr[i] > threshold_);
+    }
+    const regionSplit regions(mesh_, blocked);
+
+    // Regions that are bodies, numbered 0.. in region order
+    labelList bodyOf(regions.nRegions(), 0);
+    forAll(a, c)
+    {
+        if (a[c] > threshold_) bodyOf[regions[c]] = 1;
+    }
+    Pstream::listCombineGather(bodyOf, maxEqOp<label>());
+    Pstream::listCombineScatter(bodyOf);
+    label nB = 0;
+    forAll(bodyOf, r)
+    {
+        bodyOf[r] = bodyOf[r] ? nB++ : -1;
+    }
+
+    // Each cell's body: the core cells', then the cells of smaller
+    // fraction layer by layer, each to the body of its neighbour with the
+    // larger fraction
+    cellBody_.setSize(a.size());
+    cellBody_ = -1;
+    forAll(a, c)
+    {
+        if (a[c] > threshold_) cellBody_[c] = bodyOf[regions[c]];
+    }
+    labelList& lab = cellBody_;
+    for (label layer = 0; nB && layer < 8; ++layer)
+    {
+        labelList labNbr;
+        syncTools::swapBoundaryCellList(mesh_, lab, labNbr);
+        labelList next(lab);
+        scalarField best(a.size(), -1.0);
+        auto offer = [&](label c, label l, scalar an)
+        {
+            if (lab[c] < 0 && a[c] > 0 && l >= 0 && an > best[c])
+            {
+                best[c] = an;
+                next[c] = l;
+            }
+        };
+        for (label f = 0; f < nInt; ++f)
+        {
+            offer(own[f], lab[nei[f]], a[nei[f]]);
+            offer(nei[f], lab[own[f]], a[own[f]]);
+        }
+        forAll(coupled, i)
+        {
+            if (coupled[i]) offer(own[nInt + i], labNbr[i], aNbr[i]);
+        }
+        label changed = 0;
+        forAll(lab, c)
+        {
+            if (next[c] != lab[c]) ++changed;
+        }
+        lab.transfer(next);
+        if (returnReduce(changed, sumOp<label>()) == 0) break;
+    }
+
+    // Volume and a reference point: the circular mean along periodic
+    // directions, so that a body split by a cyclic is one body
+    const boundBox& bb = mesh_.bounds();
+    const scalar twoPi = constant::mathematical::twoPi;
+    volume_.setSize(nB);
+    volume_ = Zero;
+    List<vector> X(nB, Zero), Cs(nB, Zero), Sn(nB, Zero);
+    forAll(lab, c)
+    {
+        const label b = lab[c];
+        if (b < 0) continue;
+        const scalar w = a[c]*V[c];
+        volume_[b] += w;
+        X[b] += w*C[c];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (period_[d] > 0)
+            {
+                const scalar th = twoPi*(C[c][d] - bb.min()[d])/period_[d];
+                Cs[b][d] += w*std::cos(th);
+                Sn[b][d] += w*std::sin(th);
+            }
+        }
+    }
+    sumLists(volume_);
+    sumLists(X);
+    sumLists(Cs);
+    sumLists(Sn);
+    List<vector> ref(nB);
+    forAll(ref, b)
+    {
+        ref[b] = X[b]/max(volume_[b], VSMALL);
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (period_[d] > 0)
+            {
+                ref[b][d] = bb.min()[d]
+                  + std::atan2(Sn[b][d], Cs[b][d])/twoPi*period_[d];
+            }
+        }
+    }
+
+    // The centroid, relative to the reference, wrapped into the domain
+    List<vector> R(nB, Zero);
+    forAll(lab, c)
+    {
+        const label b = lab[c];
+        if (b >= 0) R[b] += a[c]*V[c]*nearestImage(C[c] - ref[b]);
+    }
+    sumLists(R);
+    centroid_.setSize(nB);
+    forAll(centroid_, b)
+    {
+        vector& x = centroid_[b];
+        x = ref[b] + R[b]/max(volume_[b], VSMALL);
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (period_[d] > 0)
+            {
+                const scalar s = (x[d] - bb.min()[d])/period_[d];
+                x[d] = bb.min()[d] + period_[d]*(s - std::floor(s));
+            }
+        }
+    }
+}
+
+
+Foam::List<Foam::List<Foam::point>> Foam::bodyRegions::surface
+(
+    const scalarField& a
+) const
+{
+    const labelUList& own = mesh_.faceOwner();
+    const labelUList& nei = mesh_.faceNeighbour();
+    const label nInt = mesh_.nInternalFaces();
+    const vectorField& C = mesh_.C().primitiveField();
+    const boolList coupled(coupledFaces(mesh_));
+
+    // The other side's fraction and centre across coupled faces (a
+    // cyclic's neighbour centre transformed to this side)
+    scalarField aNbr;
+    syncTools::swapBoundaryCellList(mesh_, a, aNbr);
+    pointField CNbr;
+    syncTools::swapBoundaryCellPositions(mesh_, C, CNbr);
+
+    List<DynamicList<point>> pts(size());
+    auto crossing = [&](label c, const point& xn, scalar an)
+    {
+        const scalar t = (a[c] - threshold_)/(a[c] - an);
+        pts[cellBody_[c]].append(C[c] + t*(xn - C[c]));
+    };
+    for (label f = 0; f < nInt; ++f)
+    {
+        const bool o = a[own[f]] > threshold_, n = a[nei[f]] > threshold_;
+        if (o && !n) crossing(own[f], C[nei[f]], a[nei[f]]);
+        if (n && !o) crossing(nei[f], C[own[f]], a[own[f]]);
+    }
+    forAll(coupled, i)
+    {
+        const label c = own[nInt + i];
+        if (coupled[i] && a[c] > threshold_ && !(aNbr[i] > threshold_))
+        {
+            crossing(c, CNbr[i], aNbr[i]);
+        }
+    }
+    List<List<point>> bodyPts(size());
+    forAll(pts, b)
+    {
+        bodyPts[b].transfer(pts[b]);
+    }
+    Pstream::listCombineGather(bodyPts, appendEqOp());
+    return bodyPts;
+}
+
+
+// ************************************************************************* //
