@@ -4,6 +4,10 @@ Usage:
   floating.py draft CASE HEIGHT T0   mean draft over t >= T0: water level at
                                      the wall minus the body's lowest point
                                      (centroid - HEIGHT/2, an upright box)
+  floating.py bodyDraft CASE HEIGHT T0
+                                     the same from the bodies function
+                                     object's centroid (at its writes; a
+                                     rigid body has no solidDiagnostics)
   floating.py sink CASE HEIGHT       lowest point at the start and the end,
                                      and the largest upward velocity
   floating.py volumes CASE           largest relative drift of any phase
@@ -45,6 +49,14 @@ def main():
                  table(case + '/postProcessing/waterLevel/0/liquidLevel.dat')}
         drafts = [level[r[0]] - (r[12] - height/2)
                   for r in diagnostics(case) if r[0] >= t0 and r[0] in level]
+        print('%.6g' % (sum(drafts)/len(drafts)))
+    elif what == 'bodyDraft':
+        height, t0 = float(sys.argv[3]), float(sys.argv[4])
+        level = {r[0]: r[1] for r in
+                 table(case + '/postProcessing/waterLevel/0/liquidLevel.dat')}
+        drafts = [level[r[0]] - (r[6] - height/2)
+                  for r in table(case + '/postProcessing/bodies/0/bodies.dat')
+                  if r[0] >= t0 and r[0] in level]
         print('%.6g' % (sum(drafts)/len(drafts)))
     elif what == 'sink':
         height = float(sys.argv[3])

@@ -64,6 +64,8 @@ d=$(variant negativeG); setEntry "$d/$P" solids/rubber/G "[1 -1 -2 0 0 0 0] -1"
 expectFatal negativeG "$d" vheFoam "G of rubber must be positive" vheProperties
 d=$(variant hugeG); setEntry "$d/$P" solids/rubber/G "[1 -1 -2 0 0 0 0] 1e300"
 expectFatal hugeG "$d" vheFoam "G of rubber is 1e\+300 Pa, above 1e\+20 Pa" vheProperties
+d=$(variant rigidWithG); foamDictionary -entry solids/rubber/rigid -add yes "$d/$P" > /dev/null
+expectFatal rigidWithG "$d" vheFoam "G has no meaning for the rigid material rubber" vheProperties
 d=$(variant negativeRho); setEntry "$d/$P" fluids/liquid/rho "[1 -3 0 0 0 0 0] -1"
 expectFatal negativeRho "$d" vheFoam "rho of liquid must be positive" vheProperties
 d=$(variant zeroBodyDensity); setEntry "$d/$P" solids/rubber/rho "[1 -3 0 0 0 0 0] 0"

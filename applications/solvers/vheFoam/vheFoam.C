@@ -31,6 +31,7 @@ Description
 #include "vheElasticity.H"
 #include "wallShearCorrection.H"
 #include "prescribedFlow.H"
+#include "rigidBodies.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -94,6 +95,8 @@ int main(int argc, char *argv[])
                 {
                     #include "pEqn.H"
                 }
+
+                #include "rigidProjection.H"
             }
 
             #include "BStretch.H"

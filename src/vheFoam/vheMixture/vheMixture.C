@@ -16,7 +16,7 @@
 void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
 {
     const wordList allowed =
-        solid ? wordList({"rho", "mu", "nu", "G"})
+        solid ? wordList({"rho", "mu", "nu", "G", "rigid"})
               : wordList({"rho", "mu", "nu"});
 
     for (const entry& e : dict)
@@ -82,8 +82,18 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
                 << exit(FatalIOError);
         }
 
+        // A rigid material has no modulus: its bodies move as rigid
+        // bodies (rigidBodies), it carries no B*
+        const bool rigid = solid && pd.getOrDefault<Switch>("rigid", false);
+        if (rigid && pd.found("G"))
+        {
+            FatalIOErrorInFunction(pd)
+                << "G has no meaning for the rigid material " << name
+                << ": remove it, or set rigid no" << exit(FatalIOError);
+        }
+
         scalar G = 0;
-        if (solid)
+        if (solid && !rigid)
         {
             G = dimensionedScalar("G", dimPressure, pd).value();
             if (!(G > 0))
@@ -112,6 +122,7 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
         phase p;
         p.name = name;
         p.solid = solid;
+        p.rigid = rigid;
         p.rho = rho.value();
         p.mu = hasMu ? visc : visc*rho.value();
         p.G = G;
@@ -376,7 +387,7 @@ void Foam::vheMixture::solveAlphaStep
         alpha.correctBoundaryConditions();
 
         rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, phases_[i].rho);
-        if (phases_[i].solid)
+        if (isSolid_[i])
         {
             *alphaPhiSolid_ += weight*alphaPhi;
         }
@@ -417,6 +428,7 @@ Foam::vheMixture::vheMixture
     phi_(phi),
     phases_(),
     nSolids_(0),
+    nRigid_(0),
     alphas_(),
     rho_
     (
@@ -501,16 +513,20 @@ Foam::vheMixture::vheMixture
         rhoK_[i] = phases_[i].rho;
         muK_[i] = phases_[i].mu;
         GK_[i] = phases_[i].G;
-        isSolid_[i] = phases_[i].solid;
-        nSolids_ += phases_[i].solid;
+        // The elastic solids: phi_s, Ghat, B* (a rigid material is a
+        // fluid to them)
+        isSolid_[i] = phases_[i].solid && !phases_[i].rigid;
+        nSolids_ += isSolid_[i];
+        nRigid_ += phases_[i].rigid;
     }
 
     Info<< "Phases:";
     for (const phase& p : phases_)
     {
-        Info<< ' ' << p.name << (p.solid ? " (solid" : " (fluid")
+        Info<< ' ' << p.name
+            << (p.rigid ? " (rigid solid" : p.solid ? " (solid" : " (fluid")
             << ", rho " << p.rho << ", mu " << p.mu;
-        if (p.solid) Info<< ", G " << p.G;
+        if (p.solid && !p.rigid) Info<< ", G " << p.G;
         Info<< ')';
     }
     Info<< nl;

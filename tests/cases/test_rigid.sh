@@ -1,0 +1,73 @@
+#!/bin/bash
+# Rigid bodies (solids { <name> { ...; rigid yes; } }): the velocity of each
+# body projected onto rigid motion every step (rigidBodies).
+#  - a neutrally buoyant rigid disk (r 0.1) at the centre of a plane
+#    Couette flow (walls at y = 0, 1 moving at -1 and +1 m/s, Re = 0.02 on
+#    the disk, 128 cells): it turns at half the flow's vorticity,
+#    omega_z = -1 rad/s, within 2 % over 0.25 <= t <= 0.5 (the bodies
+#    function object), stays where it is, keeps its volume (1e-6) and its
+#    shape (Taylor deformation below 0.02);
+#  - a rigid box (rho_s 500, 0.3 x 0.1) released at half its draft in water
+#    under air (the floatingBlock template at 40 x 40, as test_floating's
+#    elastic box): its mean draft over 2 <= t <= 3 is the Archimedes one,
+#    (rho_s - rho_air)/(rho_water - rho_air) x height, within 1 % of its
+#    height (measured 0.0499535 against 0.0499499: 0.004 %; the elastic box
+#    of G/rho_s = 10 is 2.1 % off), every phase volume conserved to 1e-6.
+. "$(dirname "$0")/lib.sh"
+
+dat=postProcessing/bodies/0/bodies.dat
+
+# shearCase DIR N: the channel without body force, one rigid disk, the
+# walls moving apart at +-1 m/s
+shearCase() {
+    local d=$1 n=$2
+    channelCase "$d" cells="$n" nDisks=1 f=0 endTime=0.5 writeInterval=0.125 \
+        || return 1
+    cat > "$d/system/setBodiesDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
+bodies { disk { material rubber; shape cylinder; centre (0.5 0.5 0.5); radius 0.1; axis (0 0 1); } }
+DICT
+    python3 - "$d" "$n" <<'PY' || return 1
+import re, sys
+d, n = sys.argv[1], int(sys.argv[2])
+p = d + '/constant/vheProperties'
+s = re.sub(r'rubber \{[^}]*\}', 'rubber { rho [1 -3 0 0 0 0 0] $rhoDisk; '
+           'mu [1 -1 -1 0 0 0 0] $mu; rigid yes; }', open(p).read())
+open(p, 'w').write(s)
+# blockMesh lists the bottom wall's faces first, then the top's
+p = d + '/0/U'
+vals = ' '.join(['(-1 0 0)']*n + ['(1 0 0)']*n)
+s = open(p).read().replace('walls { type noSlip; }',
+    'walls { type fixedValue; value nonuniform List<vector> %d (%s); }' % (2*n, vals))
+open(p, 'w').write(s)
+PY
+    run "$d" setBodies
+}
+
+sh="$WORK/shear"
+shearCase "$sh" 128 || { fail setupShear "$sh"; finish; }
+run "$sh" vheFoam || fail shearRun "$sh/log.vheFoam"
+read -r werr xerr verr dmax <<< "$(awk '!/^#/ && $1 >= 0.25 {
+        w = $14 + 1; if (w < 0) w = -w; if (w > we) we = w
+        x = sqrt(($6 - 0.5)^2 + ($7 - 0.5)^2); if (x > xe) xe = x
+        if (!v0) v0 = $5; if ($15 > dm) dm = $15
+    } !/^#/ {if (!v0) v0 = $5; dv = $5/v0 - 1; if (dv < 0) dv = -dv; if (dv > ve) ve = dv}
+    END {printf "%.3e %.3e %.3e %.3e\n", we, xe, ve, dm}' "$sh/$dat")"
+check shearRotation "$werr < 0.02" "largest |omega_z/(-1 rad/s) - 1| $werr over 0.25 <= t <= 0.5"
+check shearStays "$xerr < 1e-6" "largest distance of the centroid from the centre $xerr m"
+check shearVolume "$verr < 1e-6" "largest volume drift $verr"
+check shearShape "$dmax < 0.02" "largest Taylor deformation $dmax"
+
+fl="$WORK/floating"
+sceneCase floatingBlock "$fl" nx=40 ny=40 depthOil=0 depthWater=0.5 shape=box \
+    blockWidth=0.3 blockHeight=0.1 nuWater=1e-2 writeInterval=0.25 \
+    blockBottom=0.475 rhoSolid=500 endTime=3 rigid=yes \
+    && run "$fl" setFields && run "$fl" setBodies || { fail setupFloating "$fl"; finish; }
+run "$fl" vheFoam || fail floatingRun "$fl/log.vheFoam"
+exact=$(python3 -c "print((500 - 1)/(1000 - 1)*0.1)")
+draft=$(python3 "$TESTS_DIR/floating.py" bodyDraft "$fl" 0.1 2)
+check floatingDraft "abs($draft - $exact) < 0.01*0.1" \
+    "draft $draft m, Archimedes $exact m (height 0.1 m)"
+drift=$(python3 "$TESTS_DIR/floating.py" volumes "$fl")
+check floatingVolumes "$drift < 1e-6" "largest relative phase volume drift $drift"
+finish
