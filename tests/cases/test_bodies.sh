@@ -42,7 +42,7 @@ prescribed "$tr" "type translation; U (1 0 0);" "(0.95 0.5 0.5)" 32 0.015625 \
 cp -r "$tr" "$tr.par"
 run "$tr" vheFoam || fail translationRun "$tr/log.vheFoam"
 run "$tr.par" decomposePar && \
-    (cd "$tr.par" && mpirun --allow-run-as-root -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
+    (cd "$tr.par" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
     || fail translationParallelRun "$tr.par/log.vheFoam"
 read -r nrow ids cerr verr wmax <<< "$(awk '!/^#/ {
         n++; if ($2 != 0) ids++
@@ -84,7 +84,7 @@ run "$ch" setBodies || fail setupChannel "$ch/log.setBodies"
 cp -r "$ch" "$ch.par"
 run "$ch" vheFoam || fail channelRun "$ch/log.vheFoam"
 run "$ch.par" decomposePar && \
-    (cd "$ch.par" && mpirun --allow-run-as-root -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
+    (cd "$ch.par" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
     || fail channelParallelRun "$ch.par/log.vheFoam"
 read -r writes bad jump <<< "$(awk '!/^#/ {
         t[$1] = 1; n[$1]++; if ($2 < 0 || $2 > 15) bad++
