@@ -7,7 +7,9 @@ over unit time windows of (max Courant of the case)/(max Courant of the
 disk-free run) in the same window.  The disk-free flow is steady
 Poiseuille flow after t = 1 (viscous time h^2/nu = 1): where its run is
 shorter than the case's (280 cells: to t = 3), its last window stands for
-the later ones.
+the later ones.  Meshes whose cases are gone keep their rows of the
+existing tables; a run restarted from a written time (log appended) has
+the CPU seconds of each part summed.
 """
 import csv
 import os
@@ -31,7 +33,29 @@ def courant_by_window(log):
     return out
 
 
-rows, co_rows = [], []
+def kept(path, ran):
+    """Rows of an existing table for meshes not run now."""
+    if not os.path.exists(path):
+        return []
+    return [r for r in list(csv.reader(open(path)))[1:] if r[0] not in ran]
+
+
+def cpu_seconds(text):
+    """ExecutionTime at the end, summed over restarts (where it drops)."""
+    total, last = 0.0, 0.0
+    for v in map(float, re.findall(r"ExecutionTime = (\S+) s", text)):
+        if v < last:
+            total += last
+        last = v
+    return "%.2f" % (total + last) if last else ""
+
+
+ran = [n for n in os.listdir(cases_dir)
+       if os.path.exists(os.path.join(results, n, "summary.csv"))]
+rows = kept(os.path.join(results, "table.csv"), ran)
+co_rows = kept(os.path.join(results, "courant.csv"), ran)
+header = next(csv.reader(open(os.path.join(results, "table.csv")))) \
+    if os.path.exists(os.path.join(results, "table.csv")) else None
 for n in sorted(os.listdir(cases_dir), key=int):
     summary = os.path.join(results, n, "summary.csv")
     if not os.path.exists(summary):
@@ -42,9 +66,8 @@ for n in sorted(os.listdir(cases_dir), key=int):
         log = os.path.join(cases_dir, n, case, "log.vheFoam")
         text = open(log).read()
         steps = text.count("\nTime = ")
-        cpu = re.findall(r"ExecutionTime = (\S+) s", text)
         rows.append([n, case] + [r[k] for k in r if k != "case"]
-                    + [steps, cpu[-1] if cpu else ""])
+                    + [steps, cpu_seconds(text)])
         if case != "none":
             co = courant_by_window(log)
             last = ref[max(ref)]
@@ -53,6 +76,8 @@ for n in sorted(os.listdir(cases_dir), key=int):
             co_rows.append([n, case, "%.3g" % ratio])
     header = ["cells", "case"] + [k for k in r if k != "case"] + ["steps", "cpuSeconds"]
 
+rows.sort(key=lambda r: (int(r[0]), r[1]))
+co_rows.sort(key=lambda r: (int(r[0]), r[1]))
 with open(os.path.join(results, "table.csv"), "w") as f:
     w = csv.writer(f)
     w.writerow(header)

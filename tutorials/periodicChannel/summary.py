@@ -23,15 +23,19 @@ def param(case, key):
 
 
 def flow_rate(case):
-    path = os.path.join(case, "postProcessing", "flowRate", "0",
-                        "surfaceFieldValue.dat")
+    """(t, sum phi) samples; a restarted run's later time directories
+    replace the earlier one's samples from their start on."""
+    base = os.path.join(case, "postProcessing", "flowRate")
     rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            t, s = line.split()[:2]
-            rows.append((float(t), float(s)))
+    for start in sorted(os.listdir(base), key=float):
+        rows = [r for r in rows if r[0] <= float(start)]
+        with open(os.path.join(base, start, "surfaceFieldValue.dat")) as f:
+            for line in f:
+                if line.startswith("#") or not line.strip():
+                    continue
+                t, s = line.split()[:2]
+                if float(t) > float(start):
+                    rows.append((float(t), float(s)))
     return rows
 
 
