@@ -104,3 +104,39 @@ double vhe_body_shape(const double J[6], int normal, double axis[3])
     b = sqrt(fmax(lmin, 0.0));
     return a + b > 0.0 ? (a - b) / (a + b) : 0.0;
 }
+
+
+int vhe_colour_bodies(int n, const double *centre, const double *radius,
+                      const double period[3], double margin, int ncolours,
+                      int *colour)
+{
+    int i, j, k, shared = 0;
+    /* near[c]: near bodies already coloured c (ncolours <= 64) */
+    int near[64];
+
+    if (ncolours < 1) ncolours = 1;
+    if (ncolours > 64) ncolours = 64;
+    for (i = 0; i < n; ++i) {
+        int best = 0;
+        for (k = 0; k < ncolours; ++k) near[k] = 0;
+        for (j = 0; j < i; ++j) {
+            double d2 = 0.0, d, reach;
+            for (k = 0; k < 3; ++k) {
+                double dk = centre[3 * i + k] - centre[3 * j + k];
+                if (period[k] > 0.0) {
+                    dk -= period[k] * floor(dk / period[k] + 0.5);
+                }
+                d2 += dk * dk;
+            }
+            d = sqrt(d2);
+            reach = radius[i] + radius[j] + margin;
+            if (d < reach) near[colour[j]] += 1;
+        }
+        for (k = 1; k < ncolours; ++k) {
+            if (near[k] < near[best]) best = k;
+        }
+        colour[i] = best;
+        shared += near[best] > 0;
+    }
+    return shared;
+}

@@ -541,6 +541,20 @@ void vhe_body_omega(const double J[6], const double L[3], int normal,
                     double omega[3]);
 double vhe_body_shape(const double J[6], int normal, double axis[3]);
 
+/*
+ * vhe_colour_bodies: colours for n bodies, each given by a centre
+ * (3 per body) and a bounding radius, so that no two bodies nearer than
+ * margin (surface to surface, bounding spheres) share a colour where
+ * ncolours allow.  period[k] > 0: direction k is periodic with that
+ * length (nearest image).  Greedy in the given order: each body takes
+ * the lowest colour no nearer body has, or, when all ncolours are taken,
+ * the colour of fewest near bodies.  Returns the number of bodies that
+ * had to share a colour with a near one (0: a proper colouring).
+ */
+int vhe_colour_bodies(int n, const double *centre, const double *radius,
+                      const double period[3], double margin, int ncolours,
+                      int *colour);
+
 #ifdef __cplusplus
 }
 #endif

@@ -129,6 +129,48 @@ START_TEST(test_devb_mag)
 }
 END_TEST
 
+/* A chain of three disks (A near B, B near C, A far from C) needs two
+ * colours; a fourth disk near all three a third; across a periodic
+ * boundary the nearest image counts; with one colour every near pair
+ * shares it. */
+START_TEST(test_colour_bodies)
+{
+    const double r[4] = {0.1, 0.1, 0.1, 0.1};
+    const double none[3] = {0.0, 0.0, 0.0}, px[3] = {1.0, 0.0, 0.0};
+    double c[12] = {0.1, 0.5, 0.0,  0.32, 0.5, 0.0,  0.54, 0.5, 0.0,
+                    0.32, 0.6, 0.0};
+    int col[4], shared;
+
+    shared = vhe_colour_bodies(3, c, r, none, 0.05, 4, col);
+    ck_assert_int_eq(shared, 0);
+    ck_assert_int_eq(col[0], 0);
+    ck_assert_int_eq(col[1], 1);
+    ck_assert_int_eq(col[2], 0);
+
+    /* the fourth is near all three: 0.1 from B, 0.242 < 0.25 from A, C */
+    shared = vhe_colour_bodies(4, c, r, none, 0.05, 4, col);
+    ck_assert_int_eq(shared, 0);
+    ck_assert_int_eq(col[3], 2);
+
+    /* no margin: only B and D (0.1 apart) are near */
+    shared = vhe_colour_bodies(4, c, r, none, 0.0, 4, col);
+    ck_assert_int_eq(shared, 0);
+    ck_assert_int_eq(col[0] + col[1] + col[2] + col[3], 1);
+
+    /* periodic in x: disks at 0.05 and 0.95 are 0.1 apart */
+    c[0] = 0.05; c[3] = 0.95; c[4] = 0.5;
+    shared = vhe_colour_bodies(2, c, r, px, 0.01, 4, col);
+    ck_assert_int_ne(col[0], col[1]);
+    shared = vhe_colour_bodies(2, c, r, none, 0.01, 4, col);
+    ck_assert_int_eq(col[1], 0);
+
+    /* one colour: the near pairs share it and are counted */
+    c[0] = 0.1; c[3] = 0.32;
+    shared = vhe_colour_bodies(3, c, r, none, 0.05, 1, col);
+    ck_assert_int_eq(shared, 2);
+}
+END_TEST
+
 Suite *bodies_suite(void)
 {
     Suite *s = suite_create("bodies");
@@ -138,6 +180,7 @@ Suite *bodies_suite(void)
     tcase_add_test(tc, test_shape_2d);
     tcase_add_test(tc, test_shape_3d);
     tcase_add_test(tc, test_devb_mag);
+    tcase_add_test(tc, test_colour_bodies);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -32,6 +32,7 @@ Description
 #include "wallShearCorrection.H"
 #include "prescribedFlow.H"
 #include "rigidBodies.H"
+#include "bodyColours.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -101,6 +102,8 @@ int main(int argc, char *argv[])
 
             #include "BStretch.H"
         }
+
+        if (colours.active()) colours.correct();
 
         runTime.write();
 

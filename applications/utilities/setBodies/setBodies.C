@@ -37,6 +37,12 @@ Description
     }
     \endverbatim
 
+    A material's bodies are spread over its colours (alpha.<material>,
+    alpha.<material>.1, ...): the entry colours of the material in
+    constant/vheProperties, or one per body up to four; bodies whose
+    bounding spheres come within four cells of each other take different
+    colours where the colours allow, so that they never merge.
+
     In a 2D case (z empty) bodies are disks (cylinders along z, infinite)
     or boxes; packings make disks.  Periodic (cyclic) directions are found
     from the mesh: bodies may cross them and are wrapped.  Every check is
@@ -58,6 +64,7 @@ struct body
 {
     word name;
     label material;     // index into solidNames
+    label colour;       // the material's colour tracer
     vhe_shape shape;
 };
 
@@ -333,6 +340,7 @@ int main(int argc, char *argv[])
                 body bd;
                 bd.name = e.keyword() + "_" + Foam::name(b);
                 bd.material = m;
+                bd.colour = 0;
                 bd.shape = vhe_shape{};
                 bd.shape.kind = nDim == 2 ? VHE_CYLINDER : VHE_SPHERE;
                 bd.shape.axis[2] = 1;
@@ -349,6 +357,7 @@ int main(int argc, char *argv[])
             body bd;
             bd.name = e.keyword();
             bd.material = m;
+            bd.colour = 0;
             bd.shape = readShape(d, nDim);
             bodies.append(bd);
         }
@@ -377,9 +386,74 @@ int main(int argc, char *argv[])
         }
     }
 
-    // ---- Solid fractions per material, by sub-cell integration
+    // ---- Colours: per material, the entry colours or one per body up to
+    // four; bodies whose bounding spheres come within four cells of each
+    // other take different colours (greedy, in the order given), so that
+    // they never merge (vheMixture, bodyColours)
+    const label nCellsAll = returnReduce(mesh.nCells(), sumOp<label>());
+    scalar cellVolume = 1;
+    for (int k = 0; k < nDim; ++k) cellVolume *= hi[k] - lo[k];
+    const scalar h = std::pow(cellVolume/nCellsAll, 1.0/nDim);
+    labelList nColours(solidNames.size(), 1), offset(solidNames.size(), 0);
+    label nPhases = 0;
+    forAll(solidNames, m)
+    {
+        DynamicList<label> mine;
+        forAll(bodies, i)
+        {
+            if (bodies[i].material == m) mine.append(i);
+        }
+        const dictionary& sd = props.subDict("solids").subDict(solidNames[m]);
+        nColours[m] =
+            sd.getOrDefault<label>("colours", max(1, min(mine.size(), 4)));
+        if (nColours[m] < 1 || nColours[m] > 16)
+        {
+            FatalIOErrorInFunction(sd)
+                << "colours of " << solidNames[m] << " must lie in [1, 16],"
+                << " got " << nColours[m] << exit(FatalIOError);
+        }
+        offset[m] = nPhases;
+        nPhases += nColours[m];
+
+        List<double> centre(3*mine.size()), radius(mine.size());
+        List<int> colour(mine.size(), 0);
+        forAll(mine, j)
+        {
+            const vhe_shape& sh = bodies[mine[j]].shape;
+            double blo[3], bhi[3];
+            vhe_shape_bounds(&sh, blo, bhi);
+            scalar r2 = 0;
+            for (int k = 0; k < nDim; ++k) r2 += sqr(0.5*(bhi[k] - blo[k]));
+            radius[j] = std::sqrt(r2);
+            for (int k = 0; k < 3; ++k)
+            {
+                centre[3*j + k] = k < nDim ? sh.centre[k] : 0.0;
+            }
+        }
+        double period[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            period[k] = periodic[k] ? hi[k] - lo[k] : 0.0;
+        }
+        const int shared = vhe_colour_bodies
+        (
+            mine.size(), centre.cdata(), radius.cdata(), period, 4*h,
+            nColours[m], colour.data()
+        );
+        forAll(mine, j) bodies[mine[j]].colour = colour[j];
+        Info<< "Material " << solidNames[m] << ": " << mine.size()
+            << " bodies in " << nColours[m] << " colour"
+            << (nColours[m] > 1 ? "s" : "");
+        if (shared)
+        {
+            Info<< ", " << shared << " of them near a body of their colour";
+        }
+        Info<< nl;
+    }
+
+    // ---- Solid fractions per material and colour, by sub-cell integration
     const label nCells = mesh.nCells();
-    List<scalarField> solid(solidNames.size(), scalarField(nCells, 0));
+    List<scalarField> solid(nPhases, scalarField(nCells, 0));
     scalarField phis(nCells, 0);
     // Cell bounding boxes, once for all bodies and images
     List<boundBox> cellBox(nCells);
@@ -430,7 +504,7 @@ int main(int argc, char *argv[])
                 if (!overlap) continue;
                 const scalar f =
                     vhe_shape_fraction(&s, clo, chi, nDim, maxDepth);
-                solid[b.material][c] += f;
+                solid[offset[b.material] + b.colour][c] += f;
                 phis[c] += f;
                 placed += f*mesh.V()[c];
             }
@@ -442,6 +516,7 @@ int main(int argc, char *argv[])
             volume *= bb.span().z();     // area times the mesh depth
         }
         Info<< "Body " << b.name << " (" << solidNames[b.material]
+            << ", colour " << b.colour
             << "): volume " << volume << ", on the mesh " << placed << nl;
     }
 
@@ -477,12 +552,44 @@ int main(int argc, char *argv[])
         fluidAlphas.set(i, readOrCreate("alpha." + fluidNames[i]));
         if (fluidNames.size() == 1) fluidAlphas[i].primitiveFieldRef() = 1;
     }
-    PtrList<volScalarField> solidAlphas(solidNames.size());
+    // Colour k > 0 of a material: alpha.<material>.<k>, with colour 0's
+    // boundary conditions; files of colours beyond the material's go
+    PtrList<volScalarField> solidAlphas(nPhases);
     forAll(solidNames, m)
     {
-        solidAlphas.set(m, readOrCreate("alpha." + solidNames[m]));
-        solidAlphas[m].primitiveFieldRef() = min(solid[m], scalar(1));
-        solidAlphas[m].correctBoundaryConditions();
+        for (label k = 0; k < nColours[m]; ++k)
+        {
+            const label i = offset[m] + k;
+            const word name("alpha." + solidNames[m]);
+            solidAlphas.set
+            (
+                i,
+                k == 0
+              ? readOrCreate(name)
+              : new volScalarField
+                (
+                    IOobject
+                    (
+                        name + "." + Foam::name(k), runTime.timeName(), mesh,
+                        IOobject::NO_READ, IOobject::NO_WRITE
+                    ),
+                    solidAlphas[offset[m]]
+                )
+            );
+            solidAlphas[i].primitiveFieldRef() = min(solid[i], scalar(1));
+            solidAlphas[i].correctBoundaryConditions();
+        }
+        for (label k = nColours[m]; ; ++k)
+        {
+            const fileName f
+            (
+                runTime.timePath()
+               /word("alpha." + solidNames[m] + "." + Foam::name(k))
+            );
+            if (!isFile(f) && !isFile(f + ".gz")) break;
+            rm(f);
+            rm(f + ".gz");
+        }
     }
 
     // Fluids keep their proportions and fill what the solids leave

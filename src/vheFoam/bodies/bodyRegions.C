@@ -23,23 +23,23 @@ namespace
             x.append(y);
         }
     };
+}
 
-    //- Which boundary faces are coupled (processor, cyclic)
-    Foam::boolList coupledFaces(const Foam::fvMesh& mesh)
+
+Foam::boolList Foam::bodyRegions::coupledFaces(const fvMesh& mesh)
+{
+    Foam::boolList coupled(mesh.nBoundaryFaces(), false);
+    for (const Foam::polyPatch& pp : mesh.boundaryMesh())
     {
-        Foam::boolList coupled(mesh.nBoundaryFaces(), false);
-        for (const Foam::polyPatch& pp : mesh.boundaryMesh())
+        if (pp.coupled())
         {
-            if (pp.coupled())
-            {
-                Foam::SubList<bool>
-                (
-                    coupled, pp.size(), pp.start() - mesh.nInternalFaces()
-                ) = true;
-            }
+            Foam::SubList<bool>
+            (
+                coupled, pp.size(), pp.start() - mesh.nInternalFaces()
+            ) = true;
         }
-        return coupled;
     }
+    return coupled;
 }
 
 
@@ -130,7 +130,10 @@ void Foam::bodyRegions::find(const scalarField& a)
 
     // Each cell's body: the core cells', then the cells of smaller
     // fraction layer by layer, each to the body of its neighbour with the
-    // larger fraction
+    // larger fraction, until no cell of nonzero fraction touches a body
+    // (up to 64 layers): the thin tails that a shear flow draws out of a
+    // body belong to it, for its volume and for a move to another colour
+    // (with 8 layers, 6e-5 of a disk's volume in shear was left out)
     cellBody_.setSize(a.size());
     cellBody_ = -1;
     forAll(a, c)
@@ -138,7 +141,7 @@ void Foam::bodyRegions::find(const scalarField& a)
         if (a[c] > threshold_) cellBody_[c] = bodyOf[regions[c]];
     }
     labelList& lab = cellBody_;
-    for (label layer = 0; nB && layer < 8; ++layer)
+    for (label layer = 0; nB && layer < 64; ++layer)
     {
         labelList labNbr;
         syncTools::swapBoundaryCellList(mesh_, lab, labNbr);

@@ -16,7 +16,7 @@
 void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
 {
     const wordList allowed =
-        solid ? wordList({"rho", "mu", "nu", "G", "rigid"})
+        solid ? wordList({"rho", "mu", "nu", "G", "rigid", "colours"})
               : wordList({"rho", "mu", "nu"});
 
     for (const entry& e : dict)
@@ -119,14 +119,45 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
             }
         }
 
-        phase p;
-        p.name = name;
-        p.solid = solid;
-        p.rigid = rigid;
-        p.rho = rho.value();
-        p.mu = hasMu ? visc : visc*rho.value();
-        p.G = G;
-        phases_.append(p);
+        // Colours: given, or as many as there are alpha.<name>.<k> files
+        label nColours = 1;
+        if (solid && pd.found("colours"))
+        {
+            nColours = pd.get<label>("colours");
+            if (nColours < 1 || nColours > 16)
+            {
+                FatalIOErrorInFunction(pd)
+                    << "colours of " << name << " must lie in [1, 16], got "
+                    << nColours << exit(FatalIOError);
+            }
+        }
+        else if (solid)
+        {
+            const fileName timeDir(mesh_.time().timePath());
+            auto present = [&](const label k)
+            {
+                const fileName f
+                (
+                    timeDir/word("alpha." + name + "." + Foam::name(k))
+                );
+                return isFile(f) || isFile(f + ".gz");
+            };
+            while (present(nColours)) ++nColours;
+        }
+
+        for (label k = 0; k < nColours; ++k)
+        {
+            phase p;
+            p.name = k ? word(name + "." + Foam::name(k)) : name;
+            p.material = name;
+            p.colour = k;
+            p.solid = solid;
+            p.rigid = rigid;
+            p.rho = rho.value();
+            p.mu = hasMu ? visc : visc*rho.value();
+            p.G = G;
+            phases_.append(p);
+        }
     }
 }
 
@@ -165,6 +196,15 @@ void Foam::vheMixture::readAlphas()
         const word name("alpha." + phases_[i].name);
         IOobject io(name, mesh_.time().timeName(), mesh_,
                     IOobject::MUST_READ, IOobject::AUTO_WRITE);
+        if (phases_[i].colour > 0 && !io.typeHeaderOk<volScalarField>(true))
+        {
+            // A colour not yet used: empty, colour 0's boundary conditions
+            const volScalarField& a0 = alphas_[i - phases_[i].colour];
+            alphas_.set(i, new volScalarField(io, a0));
+            alphas_[i] == dimensionedScalar(dimless, Zero);
+            alphas_[i].oldTime();
+            continue;
+        }
         if (!io.typeHeaderOk<volScalarField>(true))
         {
             FatalIOErrorInFunction(*this)

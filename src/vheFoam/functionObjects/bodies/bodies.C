@@ -101,12 +101,15 @@ bool Foam::functionObjects::bodies::write()
 
     DynamicList<body> found;
     DynamicList<List<point>> surface;
-    label m = 0;
+    // Material m's bodies over all its colours
+    label m = -1;
     forAll(mixture.phases(), i)
     {
-        if (mixture.phases()[i].solid)
+        const vheMixture::phase& p = mixture.phases()[i];
+        if (p.solid)
         {
-            findBodies(mixture.alphas()[i], m++, found, surface);
+            if (p.colour == 0) ++m;
+            findBodies(mixture.alphas()[i], m, p.colour, found, surface);
         }
     }
 

@@ -13,6 +13,7 @@ void Foam::functionObjects::bodies::findBodies
 (
     const volScalarField& alpha,
     const label m,
+    const label colour,
     DynamicList<body>& found,
     DynamicList<List<point>>& surface
 )
@@ -39,7 +40,7 @@ void Foam::functionObjects::bodies::findBodies
         body bd;
         bd.id = -1;
         bd.material = m;
-        bd.colour = 0;
+        bd.colour = colour;
         bd.volume = regions_.volume()[b];
         bd.centroid = regions_.centroid()[b];
         bd.U = P[b]/max(bd.volume, VSMALL);

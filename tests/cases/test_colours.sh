@@ -1,0 +1,129 @@
+#!/bin/bash
+# Bodies that stay bodies (colours: vheMixture, setBodies, bodyColours).
+# 64 cells, disks of radius 0.1 (6.4 cells), G 10 Pa, t <= 3, writes
+# every 0.1 (the bodies function object):
+#  - shear: two disks in plane Couette flow (walls at y = 0, 1 moving at
+#    -1 and +1 m/s, mu 1 Pa s), the upper one behind the lower, 3 cells
+#    apart: setBodies gives them two colours; they meet, roll over each
+#    other and part, the classic two-particle interaction: 2 bodies (ids
+#    0 and 1) at every write, each body's volume kept to 1e-6, and further
+#    apart across the flow after the encounter than before (measured
+#    0.06 -> 0.13 m); 2 ranks (the processor boundary y = 0.5 between
+#    them) give the rows of the serial run;
+#  - sedimentation: two heavy disks (rho_s 2, mu 0.1, body force 100 m/s^2
+#    down) one above the other, 0.2 apart, so both take colour 0: the
+#    upper one lands on the lower one, which rests on the wall.
+#    bodyColours moves one to colour 1 as they approach (the log says
+#    so); 2 bodies at every write, each body's volume kept to 1e-6, the
+#    smallest gap above half a cell (measured 0.9 cell).  With colours 1
+#    the same disks merge (one body at t = 1.7, 1.8) and exchange 1.2 % of
+#    their volume: the test can fail.
+. "$(dirname "$0")/lib.sh"
+
+dat=postProcessing/bodies/0/bodies.dat
+
+# colourCase DIR COLOURS KIND: the two disks ("" : setBodies' choice of
+# colours); KIND shear or sediment
+colourCase() {
+    local d=$1 colours=$2 kind=$3 entries c1 c2
+    if [ "$kind" = shear ]; then
+        entries=(f=0 G=10) c1="0.38 0.53" c2="0.62 0.47"
+    else
+        entries=(f=0 fy=-100 rhoDisk=2 mu=0.1 G=10) c1="0.5 0.15" c2="0.5 0.55"
+    fi
+    channelCase "$d" cells=64 nDisks=2 endTime=3 writeInterval=0.1 \
+        "${entries[@]}" || return 1
+    cat > "$d/system/setBodiesDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
+bodies
+{
+    a { material rubber; shape cylinder; centre ($c1 0.5); radius 0.1; axis (0 0 1); }
+    b { material rubber; shape cylinder; centre ($c2 0.5); radius 0.1; axis (0 0 1); }
+}
+DICT
+    python3 - "$d" "$colours" "$kind" <<'PY' || return 1
+import re, sys
+d, colours, kind = sys.argv[1:4]
+n = 64
+if colours:
+    p = d + '/constant/vheProperties'
+    s = re.sub(r'(rubber \{[^}]*)\}', r'\1 colours %s; }' % colours, open(p).read())
+    open(p, 'w').write(s)
+if kind == 'shear':
+    p = d + '/0/U'
+    vals = ' '.join(['(-1 0 0)']*n + ['(1 0 0)']*n)
+    s = open(p).read().replace('walls { type noSlip; }',
+        'walls { type fixedValue; value nonuniform List<vector> %d (%s); }' % (2*n, vals))
+    open(p, 'w').write(s)
+PY
+    run "$d" setBodies
+}
+
+# counts FILE: "fewest most idsOk" bodies per write (idsOk 1: ids 0 and 1)
+counts() {
+    awk '!/^#/ {n[$1]++; s[$1] += $2}
+        END {lo = 1e9; hi = 0; ok = 1
+             for (t in n) {if (n[t] < lo) lo = n[t]; if (n[t] > hi) hi = n[t]
+                           if (s[t] != 1) ok = 0}
+             print lo, hi, ok}' "$1"
+}
+
+# drift FILE: largest relative volume change of one id
+drift() {
+    awk '!/^#/ {if (!($2 in v0)) v0[$2] = $5; d = $5/v0[$2] - 1
+        if (d < 0) d = -d; if (d > m) m = d} END {printf "%.3e\n", m}' "$1"
+}
+
+# ---- shear
+pr="$WORK/shear"
+colourCase "$pr" "" shear || { fail setupShear "$pr"; finish; }
+grep -q "2 bodies in 2 colours" "$pr/log.setBodies" \
+    || fail shearColours "$pr/log.setBodies: expected 2 bodies in 2 colours"
+cp -r "$pr" "$pr.par"
+run "$pr" vheFoam || fail shearRun "$pr/log.vheFoam"
+read -r wmin wmax ids <<< "$(counts "$pr/$dat")"
+check shearCount "$wmin == 2 and $wmax == 2 and $ids == 1" \
+    "bodies per write $wmin..$wmax (ids 0 and 1: $ids)"
+d=$(drift "$pr/$dat")
+check shearVolume "$d < 1e-6" "largest relative volume drift of a body $d"
+read -r dy0 dy1 gmin <<< "$(awk '!/^#/ {y[$1, $2] = $7; t[$1] = 1
+        if ($NF >= 0 && (gm == "" || $NF < gm)) gm = $NF}
+    END {first = 1e9; last = -1
+         for (s in t) {if (s + 0 < first) first = s + 0; if (s + 0 > last) last = s + 0}
+         a = y[first, 0] - y[first, 1]; b = y[last, 0] - y[last, 1]
+         if (a < 0) a = -a; if (b < 0) b = -b
+         printf "%.4f %.4f %.4g\n", a, b, gm}' "$pr/$dat")"
+check shearDrift "$dy1 > 1.5*$dy0" \
+    "cross-stream distance $dy0 m at t = 0.1, $dy1 m at t = 3 (smallest gap $gmin m)"
+run "$pr.par" decomposePar && \
+    (cd "$pr.par" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
+    || fail shearParallelRun "$pr.par/log.vheFoam"
+out=$(python3 "$TESTS_DIR/bodiesDiff.py" "$pr/$dat" "$pr.par/$dat")
+cmax=$(echo "$out" | awk '$1 ~ /^centroid|^volume|^colour/ {if ($2 > m) m = $2} END {print m + 0}')
+check shearParallel "'keys equal' in '''$out''' and $cmax < 1e-3" \
+    "serial and 2 ranks: $(echo "$out" | sed -n 2p), largest centroid, volume or colour difference $cmax (a sixteenth of a cell: the solvers' tolerances, grown through the encounter)"
+
+# ---- sedimentation onto each other
+sd="$WORK/sediment"
+colourCase "$sd" "" sediment || { fail setupSediment "$sd"; finish; }
+n0=$(grep -c "(rubber, colour 0)" "$sd/log.setBodies")
+check sedimentSameColour "$n0 == 2" "bodies of colour 0 at the start: $n0"
+run "$sd" vheFoam || fail sedimentRun "$sd/log.vheFoam"
+moves=$(grep "moved to another colour" "$sd/log.vheFoam" | awk '{s += $3} END {print s + 0}')
+check sedimentRecoloured "$moves >= 1" "$moves colour moves in the log"
+read -r wmin wmax ids <<< "$(counts "$sd/$dat")"
+check sedimentCount "$wmin == 2 and $wmax == 2 and $ids == 1" \
+    "bodies per write $wmin..$wmax (ids 0 and 1: $ids)"
+d=$(drift "$sd/$dat")
+check sedimentVolume "$d < 1e-6" "largest relative volume drift of a body $d"
+gmin=$(awk '!/^#/ && $NF >= 0 && (g == "" || $NF < g) {g = $NF} END {print g}' "$sd/$dat")
+check sedimentGap "$gmin > 0.5/64" "smallest gap $gmin m (cell 0.0156 m)"
+
+one="$WORK/sedimentOneColour"
+colourCase "$one" 1 sediment || { fail setupOneColour "$one"; finish; }
+run "$one" vheFoam || fail oneColourRun "$one/log.vheFoam"
+read -r wmin wmax ids <<< "$(counts "$one/$dat")"
+d=$(drift "$one/$dat")
+check oneColourMerges "$wmin < 2 or $d > 1e-3" \
+    "with one colour: bodies per write $wmin..$wmax, largest volume drift of a body $d"
+finish
