@@ -5,6 +5,7 @@
 #include "bodyColours.H"
 #include "volFields.H"
 #include "syncTools.H"
+#include "fvcSurfaceIntegrate.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -13,7 +14,8 @@ Foam::bodyColours::bodyColours(vheMixture& mixture)
     mixture_(mixture),
     materials_(),
     regions_(mixture.rho().mesh(), 0.5),
-    warned_(false)
+    warned_(false),
+    travelled_(maxTravel)
 {
     const List<vheMixture::phase>& ph = mixture_.phases();
     DynamicList<labelList> groups;
@@ -214,6 +216,22 @@ void Foam::bodyColours::correct(const labelList& phases)
 
 void Foam::bodyColours::correct()
 {
+    // How far the fastest material point moved this step, in cells: the
+    // flow Courant number (CourantNo.H's)
+    const fvMesh& mesh = mixture_.rho().mesh();
+    const surfaceScalarField& phi =
+        mesh.lookupObject<surfaceScalarField>("phi");
+    travelled_ +=
+        0.5*gMax
+        (
+            fvc::surfaceSum(mag(phi))().primitiveField()/mesh.V().field()
+        )*mesh.time().deltaTValue();
+    if (travelled_ < maxTravel && !mesh.changing())
+    {
+        return;
+    }
+    travelled_ = 0;
+
     for (const labelList& g : materials_)
     {
         correct(g);

@@ -250,32 +250,38 @@ void Foam::vheMixture::checkAlphas() const
 }
 
 
-Foam::PtrList<Foam::surfaceScalarField> Foam::vheMixture::nHatfs() const
+Foam::PtrList<Foam::surfaceScalarField> Foam::vheMixture::nHatfs
+(
+    const labelList& active
+) const
 {
-    // Interface normal flux between every pair of phases i < j, as
+    // Interface normal flux between every pair of active phases i < j, as
     // multiphaseMixture, from each phase's face value and face gradient
-    // computed once (not once per pair)
+    // computed once (not once per pair); the pairs with an empty phase are
+    // zero and left unset
     const label n = alphas_.size();
     PtrList<surfaceScalarField> alphaf(n);
     PtrList<surfaceVectorField> gradAlphaf(n);
-    forAll(alphas_, i)
+    for (const label i : active)
     {
         alphaf.set(i, fvc::interpolate(alphas_[i]));
         gradAlphaf.set(i, fvc::interpolate(fvc::grad(alphas_[i])));
     }
 
     PtrList<surfaceScalarField> nHat(n*(n - 1)/2);
-    for (label i = 0, k = 0; i < n; ++i)
+    forAll(active, a)
     {
-        for (label j = i + 1; j < n; ++j, ++k)
+        const label i = active[a];
+        for (label b = a + 1; b < active.size(); ++b)
         {
+            const label j = active[b];
             const surfaceVectorField gradAlphaij
             (
                 alphaf[j]*gradAlphaf[i] - alphaf[i]*gradAlphaf[j]
             );
             nHat.set
             (
-                k,
+                pairIndex(i, j),
                 (gradAlphaij/(mag(gradAlphaij) + deltaN_)) & mesh_.Sf()
             );
         }
@@ -286,6 +292,7 @@ Foam::PtrList<Foam::surfaceScalarField> Foam::vheMixture::nHatfs() const
 
 void Foam::vheMixture::solveAlphaStep
 (
+    const labelList& active,
     scalar cAlpha,
     label nLimitSumIter,
     scalar deltaT,
@@ -298,7 +305,7 @@ void Foam::vheMixture::solveAlphaStep
     surfaceScalarField phic(mag(phi_/mesh_.magSf()));
     phic = min(cAlpha*phic, max(phic));
 
-    const PtrList<surfaceScalarField> nHatij(nHatfs());
+    const PtrList<surfaceScalarField> nHatij(nHatfs(active));
     PtrList<surfaceScalarField> alphaPhis(alphas_.size());
 
     // MULES: phase i's full flux in, its limited correction to the upwind
@@ -319,7 +326,7 @@ void Foam::vheMixture::solveAlphaStep
             true
         );
     };
-    forAll(alphas_, i)
+    for (const label i : active)
     {
         volScalarField& alpha = alphas_[i];
         alphaPhis.set
@@ -333,7 +340,7 @@ void Foam::vheMixture::solveAlphaStep
         );
         surfaceScalarField& alphaPhi = alphaPhis[i];
 
-        forAll(alphas_, j)
+        for (const label j : active)
         {
             if (j == i) continue;
             // nHat_ji = -nHat_ij, exactly in floating point
@@ -350,7 +357,13 @@ void Foam::vheMixture::solveAlphaStep
         limitCorrection(i);
     }
 
-    MULES::limitSum(alphaPhis);
+    // The active phases' fluxes, for the sum's limiter
+    UPtrList<surfaceScalarField> activePhis(active.size());
+    forAll(active, a)
+    {
+        activePhis.set(a, &alphaPhis[active[a]]);
+    }
+    MULES::limitSum(activePhis);
 
     // Full fluxes: the bounded low-order (upwind) part plus the limited
     // correction; the upwind parts are kept only for re-limiting
@@ -358,7 +371,7 @@ void Foam::vheMixture::solveAlphaStep
     (
         nLimitSumIter > 0 ? alphas_.size() : 0
     );
-    forAll(alphas_, i)
+    for (const label i : active)
     {
         tmp<surfaceScalarField> tUD(upwind<scalar>(mesh_, phi_).flux(alphas_[i]));
         alphaPhis[i] += tUD();
@@ -392,7 +405,7 @@ void Foam::vheMixture::solveAlphaStep
     for (label iter = 0; nLimitSumIter > 0; ++iter)
     {
         scalar lo = GREAT;
-        forAll(alphas_, i)
+        for (const label i : active)
         {
             alphaNew.set(i, update(i).ptr());
             lo = min(lo, min(alphaNew[i]));
@@ -402,12 +415,12 @@ void Foam::vheMixture::solveAlphaStep
         {
             break;
         }
-        forAll(alphas_, i)
+        for (const label i : active)
         {
             limitCorrection(i);
         }
-        MULES::limitSum(alphaPhis);
-        forAll(alphas_, i)
+        MULES::limitSum(activePhis);
+        for (const label i : active)
         {
             alphaPhis[i] += alphaPhiUDs[i];
         }
@@ -416,7 +429,7 @@ void Foam::vheMixture::solveAlphaStep
     rhoPhi_ = dimensionedScalar(rhoPhi_.dimensions(), Zero);
     scalarField sumAlpha(mesh_.nCells(), 0);
 
-    forAll(alphas_, i)
+    for (const label i : active)
     {
         volScalarField& alpha = alphas_[i];
         const surfaceScalarField& alphaPhi = alphaPhis[i];
@@ -689,10 +702,25 @@ void Foam::vheMixture::solve()
     const dictionary& alphaControls = mesh_.solverDict("alpha");
     const label nSub = alphaControls.getOrDefault<label>("nAlphaSubCycles", 1);
     const scalar cAlpha = alphaControls.getOrDefault<scalar>("cAlpha", 1);
+    // The phases with content: an empty phase (a colour no body has now)
+    // has zero fluxes and zero compression against every other, exactly,
+    // so it is left out, and a material's spare colours cost nothing
+    DynamicList<label> act(alphas_.size());
+    forAll(alphas_, i)
+    {
+        const volScalarField& a = alphas_[i];
+        scalar m = gMax(mag(a.primitiveField())());
+        for (const fvPatchScalarField& pf : a.boundaryField())
+        {
+            if (pf.size()) m = max(m, max(mag(pf)));
+        }
+        if (returnReduce(m, maxOp<scalar>()) > 0) act.append(i);
+    }
+    const labelList active(act);
     // Two phases need no re-limiting: their corrections are exact opposites
     const label nLimitSumIter = alphaControls.getOrDefault<label>
     (
-        "nLimitSumIter", alphas_.size() > 2 ? 2 : 0
+        "nLimitSumIter", active.size() > 2 ? 2 : 0
     );
     if (nSub < 1)
     {
@@ -710,7 +738,7 @@ void Foam::vheMixture::solve()
 
     if (nSub == 1)
     {
-        solveAlphaStep(cAlpha, nLimitSumIter, deltaT, 1);
+        solveAlphaStep(active, cAlpha, nLimitSumIter, deltaT, 1);
     }
     else
     {
@@ -729,7 +757,10 @@ void Foam::vheMixture::solve()
             {
                 for (volScalarField& alpha : alphas_) alpha.oldTime() == alpha;
             }
-            solveAlphaStep(cAlpha, nLimitSumIter, deltaT/nSub, 1.0/nSub);
+            solveAlphaStep
+            (
+                active, cAlpha, nLimitSumIter, deltaT/nSub, 1.0/nSub
+            );
             rhoPhiSum += rhoPhi_/scalar(nSub);
         }
         forAll(alphas_, i) alphas_[i].oldTime() == alpha0[i];
