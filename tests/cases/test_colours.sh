@@ -17,7 +17,13 @@
 #    so); 2 bodies at every write, each body's volume kept to 1e-6, the
 #    smallest gap above half a cell (measured 0.9 cell).  With colours 1
 #    the same disks merge (one body at t = 1.7, 1.8) and exchange 1.2 % of
-#    their volume: the test can fail.
+#    their volume: the test can fail;
+#  - dense: scene A's channel with 40 disks of radius 0.05 (area fraction
+#    0.31, G 0.1) to t = 20: setBodies' colours (those the packing needs
+#    plus two spares: 7) keep 40 bodies at every write, each body's
+#    volume kept to 1e-6 (measured 2.5e-9; with four colours bodies found
+#    no free colour six times and lost up to 6e-5 of their volume), the
+#    smallest gap above a cell (measured 1.2 cells: the packing's gap).
 . "$(dirname "$0")/lib.sh"
 
 dat=postProcessing/bodies/0/bodies.dat
@@ -77,8 +83,9 @@ drift() {
 # ---- shear
 pr="$WORK/shear"
 colourCase "$pr" "" shear || { fail setupShear "$pr"; finish; }
-grep -q "2 bodies in 2 colours" "$pr/log.setBodies" \
-    || fail shearColours "$pr/log.setBodies: expected 2 bodies in 2 colours"
+grep -q "2 bodies in 4 colours" "$pr/log.setBodies" \
+    && [ "$(grep -c "(rubber, colour 0)" "$pr/log.setBodies")" = 1 ] \
+    || fail shearColours "$pr/log.setBodies: expected 2 bodies in 4 colours (two used, two spare), one of colour 0"
 cp -r "$pr" "$pr.par"
 run "$pr" vheFoam || fail shearRun "$pr/log.vheFoam"
 read -r wmin wmax ids <<< "$(counts "$pr/$dat")"
@@ -126,4 +133,19 @@ read -r wmin wmax ids <<< "$(counts "$one/$dat")"
 d=$(drift "$one/$dat")
 check oneColourMerges "$wmin < 2 or $d > 1e-3" \
     "with one colour: bodies per write $wmin..$wmax, largest volume drift of a body $d"
+# ---- dense suspension in scene A's channel
+dn="$WORK/dense"
+channelCase "$dn" cells=64 nDisks=40 endTime=20 writeInterval=1 \
+    && run "$dn" setBodies || { fail setupDense "$dn"; finish; }
+run "$dn" vheFoam || fail denseRun "$dn/log.vheFoam"
+read -r wmin wmax ids <<< "$(counts "$dn/$dat")"
+last=$(awk '!/^#/ {t = $1} END {print t}' "$dn/$dat")
+nc=$(sed -n 's/.*bodies in \([0-9]*\) colours.*/\1/p' "$dn/log.setBodies")
+nm=$(grep "moved to another colour" "$dn/log.vheFoam" | awk '{s += $3} END {print s + 0}')
+check denseCount "$wmin == 40 and $wmax == 40 and $last == 20" \
+    "bodies per write $wmin..$wmax up to t = $last ($nc colours, $nm recolourings)"
+d=$(drift "$dn/$dat")
+check denseVolume "$d < 1e-6" "largest relative volume drift of a body $d"
+gmin=$(awk '!/^#/ && $NF >= 0 && (g == "" || $NF < g) {g = $NF} END {print g}' "$dn/$dat")
+check denseGap "$gmin > 1.0/64" "smallest gap $gmin m (cell 0.0156 m)"
 finish

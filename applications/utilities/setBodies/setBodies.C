@@ -39,7 +39,8 @@ Description
 
     A material's bodies are spread over its colours (alpha.<material>,
     alpha.<material>.1, ...): the entry colours of the material in
-    constant/vheProperties, or one per body up to four; bodies whose
+    constant/vheProperties, or as many as the colouring below needs plus
+    two spares (one for a single body); bodies whose
     bounding spheres come within four cells of each other take different
     colours where the colours allow, so that they never merge.
 
@@ -386,14 +387,15 @@ int main(int argc, char *argv[])
         }
     }
 
-    // ---- Colours: per material, the entry colours or one per body up to
-    // four; bodies whose bounding spheres come within four cells of each
+    // ---- Colours: per material, the entry colours or as many as the
+    // bodies need plus two spares; bodies whose bounding spheres come within four cells of each
     // other take different colours (greedy, in the order given), so that
     // they never merge (vheMixture, bodyColours)
     const label nCellsAll = returnReduce(mesh.nCells(), sumOp<label>());
     scalar cellVolume = 1;
     for (int k = 0; k < nDim; ++k) cellVolume *= hi[k] - lo[k];
     const scalar h = std::pow(cellVolume/nCellsAll, 1.0/nDim);
+    const label maxColours = 16;      // as vheMixture allows
     labelList nColours(solidNames.size(), 1), offset(solidNames.size(), 0);
     label nPhases = 0;
     forAll(solidNames, m)
@@ -404,17 +406,19 @@ int main(int argc, char *argv[])
             if (bodies[i].material == m) mine.append(i);
         }
         const dictionary& sd = props.subDict("solids").subDict(solidNames[m]);
-        nColours[m] =
-            sd.getOrDefault<label>("colours", max(1, min(mine.size(), 4)));
-        if (nColours[m] < 1 || nColours[m] > 16)
+        // Without an entry: the colours the greedy colouring needs, plus
+        // two spares for bodyColours to move approaching bodies to (a
+        // spare colour costs nothing while no body has it: vheMixture
+        // leaves empty phases out); one body, one colour
+        const bool given = sd.found("colours");
+        nColours[m] = given ? sd.get<label>("colours") : maxColours;
+        if (nColours[m] < 1 || nColours[m] > maxColours)
         {
             FatalIOErrorInFunction(sd)
-                << "colours of " << solidNames[m] << " must lie in [1, 16],"
-                << " got " << nColours[m] << exit(FatalIOError);
+                << "colours of " << solidNames[m] << " must lie in [1, "
+                << maxColours << "], got " << nColours[m]
+                << exit(FatalIOError);
         }
-        offset[m] = nPhases;
-        nPhases += nColours[m];
-
         List<double> centre(3*mine.size()), radius(mine.size());
         List<int> colour(mine.size(), 0);
         forAll(mine, j)
@@ -441,6 +445,14 @@ int main(int argc, char *argv[])
             nColours[m], colour.data()
         );
         forAll(mine, j) bodies[mine[j]].colour = colour[j];
+        if (!given)
+        {
+            int used = 0;
+            forAll(mine, j) used = std::max(used, colour[j] + 1);
+            nColours[m] = mine.size() > 1 ? min(used + 2, maxColours) : 1;
+        }
+        offset[m] = nPhases;
+        nPhases += nColours[m];
         Info<< "Material " << solidNames[m] << ": " << mine.size()
             << " bodies in " << nColours[m] << " colour"
             << (nColours[m] > 1 ? "s" : "");

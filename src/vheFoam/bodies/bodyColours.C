@@ -92,6 +92,13 @@ void Foam::bodyColours::correct(const labelList& phases)
     forAll(phases, k)
     {
         const scalarField& a = alphas[phases[k]].primitiveField();
+        if (gMax(a) <= 0)
+        {
+            // A spare colour: no body, no search
+            body[k].setSize(a.size(), -1);
+            near[k] = body[k];
+            continue;
+        }
         regions_.find(a);
         body[k] = regions_.cellBody();
         nBodies[k] = regions_.size();
