@@ -4,7 +4,8 @@
 Usage: evaluate.py CASES_DIR CSV
 For every run in CASES_DIR: did it end (no NaN, no fatal error), the worst
 excursion of any phase fraction outside [0, 1], the largest relative drift
-of any phase volume (vheFoam's "Phase <name> volume" lines, every step),
+of any material's volume (vheFoam's "Phase <name> volume" lines, every
+step, summed over the material's colours),
 the smallest eigenvalue of B* and the largest |det B - 1| and |dev B| of
 solid cells, and, in closed undriven boxes, the largest growth of the total
 energy (kinetic + elastic + potential) between writes and the largest gain
@@ -39,10 +40,18 @@ def evaluate(case):
     ended = bool(re.search(r"^End\s*$", log, re.M)) and "FOAM FATAL" not in log \
         and not re.search(r"\bnan\b", log, re.I)
     steps = len(re.findall(r"^Time = ", log, re.M))
+    # Volumes per material, summed over its colours (<name>.<k>): a body
+    # moved to another colour (bodyColours) changes the colours' volumes,
+    # not the material's
     volumes, alphaWorst = {}, 0.0
-    for name, v, lo, hi in PHASE.findall(log):
-        volumes.setdefault(name, []).append(float(v))
-        alphaWorst = max(alphaWorst, -float(lo), float(hi) - 1)
+    for block in re.split(r"^Time = ", log, flags=re.M):
+        sums = {}
+        for name, v, lo, hi in PHASE.findall(block):
+            material = re.sub(r"\.\d+$", "", name)
+            sums[material] = sums.get(material, 0.0) + float(v)
+            alphaWorst = max(alphaWorst, -float(lo), float(hi) - 1)
+        for material, v in sums.items():
+            volumes.setdefault(material, []).append(v)
     drift = max((max(abs(x / vs[0] - 1) for x in vs)
                  for vs in volumes.values() if vs[0] > 0), default=0.0)
     minEig, detDrift, devB = math.inf, 0.0, 0.0
