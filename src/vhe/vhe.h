@@ -555,6 +555,26 @@ int vhe_colour_bodies(int n, const double *centre, const double *radius,
                       const double period[3], double margin, int ncolours,
                       int *colour);
 
+
+/*
+ * Contact between bodies (contact.c).  The proximity psi of a body is
+ * min(1, 2 alpha) on it and falls by step (1/range) per layer of cells
+ * around it.
+ * vhe_proximity_start: psi = min(1, max(0, 2 alpha)) in n cells.
+ * vhe_proximity_layer: one layer over nFaces internal faces (owner own,
+ *   neighbour nei): out = max(out, psi of the other cell - step); out
+ *   must hold psi on entry.
+ * vhe_contact_add: f -= coef alpha psi gradPsi in n cells (f and gradPsi
+ *   3 per cell): the force density [N/m^3] on the material of fraction
+ *   alpha near a body of proximity psi, coef [N/m^2] (alpha, psi
+ *   dimensionless, gradPsi [1/m]).
+ */
+void vhe_proximity_start(long n, const double *alpha, double *psi);
+void vhe_proximity_layer(long nFaces, const int *own, const int *nei,
+                         const double *psi, double step, double *out);
+void vhe_contact_add(long n, const double *coef, const double *alpha,
+                     const double *psi, const double *gradPsi, double *f);
+
 #ifdef __cplusplus
 }
 #endif

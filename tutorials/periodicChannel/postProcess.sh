@@ -49,6 +49,42 @@ plot $profiles \
      $f/(2*$mu)*x*($L - x) dt 2 lc rgb 'black' t 'Poiseuille, no disks'
 GP
 
+# The sweep (Allrun -sweep): nu_m/nu0 against the area fraction per
+# material, with the dilute limit 1 + 2 phi of rigid disks
+if ls -d cases/phi* > /dev/null 2>&1; then
+    python3 sweep.py results/summary.csv results || exit 1
+    sweeps=""
+    for f in results/sweep_*.dat; do
+        g=${f#results/sweep_}; g=${g%.dat}
+        if [ "$g" = rigid ]; then t="rigid"; else t="G = $g Pa"; fi
+        sweeps="$sweeps '$f' u 1:2 w lp lw 2 pt 7 t '$t',"
+    done
+    gnuplot <<GP || exit 1
+set terminal pngcairo size 900,600 font ",12"
+set output 'results/sweep.png'
+set xlabel 'area fraction of the disks'; set ylabel 'nu_m / nu_0'; set grid
+set title 'Effective viscosity of the suspension (Q_{th} / Q), $(foamDictionary -entry cells -value parameters) cells'
+set key top left; set xrange [0:0.35]
+plot ${sweeps%,} 1 + 2*x dt 2 lc rgb 'black' t 'dilute rigid disks, 1 + 2 phi'
+GP
+fi
+
+# Per-body trajectories: each disk's height across the channel over time
+for d in cases/*/; do
+    dat="$d/postProcessing/bodies/0/bodies.dat"
+    [ -f "$dat" ] || continue
+    n=$(basename "$d")
+    gnuplot <<GP || exit 1
+set terminal pngcairo size 900,600 font ",12"
+set output 'results/trajectories_$n.png'
+set xlabel 't [s]'; set ylabel 'centroid x_2 [m]'; set grid
+set title 'Disk trajectories across the channel, $n (one line per body id)'
+set yrange [0:$(foamDictionary -entry L -value parameters)]
+stats '$dat' u 2 nooutput
+plot for [i=0:int(STATS_max)] '$dat' u 1:(\$2 == i ? \$7 : 1/0) w l lw 1.5 notitle
+GP
+done
+
 # phi_s = 0.5 contours over vorticity at the final time (ParaView)
 for d in cases/*/; do
     [ -f "$d/0/alpha.rubber" ] || continue

@@ -22,6 +22,14 @@ def param(case, key):
     return float(out.split()[0])
 
 
+def word(case, key, default):
+    out = subprocess.run(
+        ["foamDictionary", "-entry", key, "-value",
+         os.path.join(case, "system", "parameters")],
+        capture_output=True, text=True).stdout.split()
+    return out[0] if out else default
+
+
 def flow_rate(case):
     """(t, sum phi) samples; a restarted run's later time directories
     replace the earlier one's samples from their start on."""
@@ -52,7 +60,8 @@ def main(cases_dir, results_dir):
         case = os.path.join(cases_dir, name)
         f, L, rho, mu = (param(case, k) for k in ("f", "L", "rho", "mu"))
         depth, n, r = (param(case, k) for k in ("depth", "nDisks", "radius"))
-        G = param(case, "G") if n > 0 else 0.0
+        rigid = n > 0 and word(case, "rigid", "no") in ("yes", "on", "true")
+        G = "rigid" if rigid else (param(case, "G") if n > 0 else 0.0)
         end = param(case, "endTime")
         q_th = f * L**3 * rho / (12 * mu)
         data = flow_rate(case)

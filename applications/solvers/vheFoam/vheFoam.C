@@ -33,6 +33,7 @@ Description
 #include "prescribedFlow.H"
 #include "rigidBodies.H"
 #include "bodyColours.H"
+#include "bodyContact.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -90,6 +91,7 @@ int main(int argc, char *argv[])
 
             if (!flow.active())
             {
+                contact.correct();
                 #include "UEqn.H"
 
                 while (pimple.correct())

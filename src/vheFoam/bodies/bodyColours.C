@@ -88,6 +88,14 @@ void Foam::bodyColours::correct(const labelList& phases)
     // Per colour: each cell's body (edge included), and the body's near
     // cells (fraction above edgeFraction, grown by one layer)
     List<labelList> body(nc), near(nc);
+    List<scalarList> volume(nc);
+    // Bodies smaller than a few cells are not kept apart: a shred torn
+    // off a body (seen: a cell of fraction 0.9 split from a disk pressed
+    // on a wall, then decaying) would be counted as a second body of its
+    // colour, and the disk moved away from it, its shred left behind
+    const scalar minVolume =
+        minBodyCells*gSum(mesh.V().field())
+       /returnReduce(mesh.nCells(), sumOp<label>());
     labelList nBodies(nc, 0);
     forAll(phases, k)
     {
@@ -102,6 +110,7 @@ void Foam::bodyColours::correct(const labelList& phases)
         regions_.find(a);
         body[k] = regions_.cellBody();
         nBodies[k] = regions_.size();
+        volume[k] = regions_.volume();
         labelList edge(body[k]);
         forAll(edge, c)
         {
@@ -132,7 +141,11 @@ void Foam::bodyColours::correct(const labelList& phases)
         labelList closeTo(nB, -1);
         auto pairUp = [&](const label p, const label q)
         {
-            if (p >= 0 && q >= 0 && p != q)
+            if
+            (
+                p >= 0 && q >= 0 && p != q
+             && volume[k][p] >= minVolume && volume[k][q] >= minVolume
+            )
             {
                 const label hi = max(p, q), lo = min(p, q);
                 closeTo[hi] = max(closeTo[hi], lo);

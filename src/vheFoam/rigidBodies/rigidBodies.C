@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodies.H"
+#include "syncTools.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "vhe.h"
@@ -57,14 +58,20 @@ void Foam::rigidBodies::correct(volVectorField& U)
         dimensionedScalar(dimless, Zero)
     );
 
+    // Which body moves each cell wholly (-1: none), numbered over all
+    // rigid phases: a face is rigid only between two cells of one body
+    labelList wholly(mesh.nCells(), -1);
+
     label nBodies = 0;
     for (const label i : materials_)
     {
         const scalarField& a = mixture_.alphas()[i].primitiveField();
+        if (gMax(a) <= 0) continue;      // a spare colour: no body
         regions_.find(a);
         const label nB = regions_.size();
         const labelList& lab = regions_.cellBody();
         const List<vector>& X0 = regions_.centroid();
+        const label first = nBodies;
         nBodies += nB;
 
         // Mass, momentum and centre of mass (relative to the centroid)
@@ -121,12 +128,17 @@ void Foam::rigidBodies::correct(volVectorField& U)
             const vector r(regions_.nearestImage(C[c] - X0[b]) - Xm[b]);
             u[c] += weight(a[c])*(Ub[b] + (omega[b] ^ r) - u[c]);
             share[c] = max(share[c], weight(a[c]));
+            if (weight(a[c]) >= 1) wholly[c] = first + b;
         }
     }
     U.correctBoundaryConditions();
     share.correctBoundaryConditions();
 
-    // The faces whose two cells move wholly with a body
+    // The faces whose two cells move wholly with one body.  (Two bodies
+    // that touch: the faces between them are not rigid, else a cell
+    // between two bodies moving apart or together could have every face's
+    // flux fixed, and no pressure could make it divergence-free: the
+    // flux correction diverged when rigid bodies collided.)
     if (!rigidFaces_.valid())
     {
         rigidFaces_.reset
@@ -145,19 +157,21 @@ void Foam::rigidBodies::correct(volVectorField& U)
     const labelUList& nei = mesh.faceNeighbour();
     forAll(nei, f)
     {
-        rf[f] = (share[own[f]] >= 1 && share[nei[f]] >= 1) ? 1 : 0;
+        rf[f] = (wholly[own[f]] >= 0 && wholly[own[f]] == wholly[nei[f]]);
     }
+    labelList whollyNbr;
+    syncTools::swapBoundaryCellList(mesh, wholly, whollyNbr);
     forAll(share.boundaryField(), patchi)
     {
-        const fvPatchScalarField& sp = share.boundaryField()[patchi];
-        if (sp.coupled())
+        const fvPatch& pp = mesh.boundary()[patchi];
+        if (pp.coupled())
         {
-            const scalarField sOwn(sp.patchInternalField());
-            const scalarField sNei(sp.patchNeighbourField());
+            const label start = pp.start() - mesh.nInternalFaces();
             scalarField& rp = rf.boundaryFieldRef()[patchi];
             forAll(rp, i)
             {
-                rp[i] = (sOwn[i] >= 1 && sNei[i] >= 1) ? 1 : 0;
+                const label w = wholly[pp.faceCells()[i]];
+                rp[i] = (w >= 0 && w == whollyNbr[start + i]);
             }
         }
     }

@@ -534,7 +534,7 @@ Foam::vheMixture::vheMixture
     // #include a parameter file here.  Phase entries are checked strictly.
     {
         const wordList known
-        ({"fluids", "solids", "bodyForce", "solidFractionMin"});
+        ({"fluids", "solids", "bodyForce", "solidFractionMin", "contact"});
         for (const entry& e : *this)
         {
             if (!known.found(e.keyword()) && e.keyword() != "FoamFile"
