@@ -14,7 +14,7 @@ Foam::bodyContact::bodyContact(const vheMixture& mixture)
 :
     mixture_(mixture),
     range_(1.5),
-    strength_(0.5),
+    strength_(0),
     dtRef_(1),
     h_(),
     regions_(mixture.rho().mesh(), 0.5),
@@ -61,7 +61,7 @@ Foam::bodyContact::bodyContact(const vheMixture& mixture)
     const Time& runTime = mixture.rho().mesh().time();
     const dictionary& cd = runTime.controlDict();
     dtRef_ = runTime.deltaTValue();
-    if (cd.getOrDefault<bool>("adjustTimeStep", false))
+    if (strength_ > 0 && cd.getOrDefault<bool>("adjustTimeStep", false))
     {
         dtRef_ = cd.getOrDefault<scalar>("maxDeltaT", GREAT);
         if (dtRef_ >= GREAT)
