@@ -3,7 +3,7 @@
 # tutorials/floatingBodies (five rigid bodies of rho 600 released under
 # water, 80 x 80 cells) to t = 1.5, when they have risen into each other
 # and surfaced:
-#  - with its contact { strength 0.5; }: the run ends, 5 bodies at every
+#  - with contact on (the default with a rigid material): the run ends, 5 bodies at every
 #    write (colours), the smallest gap above half a cell (measured 1.29
 #    cells), the log reports bodies in contact;
 #  - with contact off the same bodies stop the run when they meet (the

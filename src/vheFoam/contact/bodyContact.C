@@ -20,6 +20,11 @@ Foam::bodyContact::bodyContact(const vheMixture& mixture)
     regions_(mixture.rho().mesh(), 0.5),
     force_()
 {
+    // Default: on (0.5) where a material is rigid, off for soft bodies
+    for (const vheMixture::phase& p : mixture.phases())
+    {
+        if (p.rigid) strength_ = 0.5;
+    }
     const dictionary dict(mixture.subOrEmptyDict("contact"));
     range_ = dict.getOrDefault<scalar>("range", range_);
     strength_ = dict.getOrDefault<scalar>("strength", strength_);
