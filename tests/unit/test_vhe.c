@@ -1383,6 +1383,7 @@ static Suite *exact_suite(void)
 
 Suite *logb_suite(void);   /* test_logb.c */
 Suite *bodies_suite(void); /* test_bodies.c */
+Suite *contact_suite(void); /* test_contact.c */
 
 int main(void)
 {
@@ -1396,6 +1397,7 @@ int main(void)
     srunner_add_suite(sr, exact_suite());
     srunner_add_suite(sr, logb_suite());
     srunner_add_suite(sr, bodies_suite());
+    srunner_add_suite(sr, contact_suite());
     srunner_run_all(sr, CK_NORMAL);
     nf = srunner_ntests_failed(sr);
     srunner_free(sr);
