@@ -34,7 +34,10 @@ pick periodicChannel_disks.png "$t/periodicChannel/results/disks_G0.5.png"
 pick periodicChannel_flowRate.png "$t/periodicChannel/results/flowRate.png"
 pick damBreakSpheres_scene.png "$t/damBreakSpheres/results/scene_G0.1_t0.5.png"
 pick damBreakSpheres_hL.png "$t/damBreakSpheres/results/hL.png"
+pick periodicChannel_sweep.png "$t/periodicChannel/results/sweep.png"
 pick floatingBlock_scene.png "$t"/floatingBlock/results/scene_t*.png
+pick floatingBodies_scene.png "$t/floatingBodies/results/scene_t1.png"
+pick floatingBodies_heights.png "$t/floatingBodies/results/heights.png"
 pick stairs_scene.png "$t"/stairs/results/scene_t1*.png
 pick bubbleObstacle_scene.png "$t"/bubbleObstacle/results/scene_amr_t*.png
 pick errorVsRuntime.png "$b/errorVsRuntime/errorVsRuntime.png"

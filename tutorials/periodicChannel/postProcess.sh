@@ -65,7 +65,7 @@ set output 'results/sweep.png'
 set xlabel 'area fraction of the disks'; set ylabel 'nu_m / nu_0'; set grid
 set title 'Effective viscosity of the suspension (Q_{th} / Q), $(foamDictionary -entry cells -value parameters) cells'
 set key top left; set xrange [0:0.35]
-plot ${sweeps%,} 1 + 2*x dt 2 lc rgb 'black' t 'dilute rigid disks, 1 + 2 phi'
+plot ${sweeps} 1 + 2*x dt 2 lc rgb 'black' t 'dilute rigid disks, 1 + 2 phi'
 GP
 fi
 

@@ -4,6 +4,8 @@
 
 #include "rigidBodies.H"
 #include "syncTools.H"
+#include "regionSplit.H"
+#include "fvMatrices.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "vhe.h"
@@ -177,6 +179,74 @@ void Foam::rigidBodies::correct(volVectorField& U)
     }
 
     Info<< "Rigid bodies: " << nBodies << " projected" << endl;
+}
+
+
+Foam::scalar Foam::rigidBodies::makeCompatible
+(
+    fvScalarMatrix& eqn,
+    const volScalarField& p
+) const
+{
+    const fvMesh& mesh = p.mesh();
+    const surfaceScalarField& rf = *rigidFaces_;
+    const label nInt = mesh.nInternalFaces();
+
+    // The parts of the mesh joined by open faces
+    boolList blocked(mesh.nFaces(), false);
+    for (label f = 0; f < nInt; ++f) blocked[f] = rf[f] > 0.5;
+    forAll(rf.boundaryField(), patchi)
+    {
+        const fvsPatchScalarField& rp = rf.boundaryField()[patchi];
+        const label start = mesh.boundaryMesh()[patchi].start();
+        forAll(rp, i) blocked[start + i] = rp[i] > 0.5;
+    }
+    const regionSplit parts(mesh, blocked);
+    const label nParts = parts.nRegions();
+
+    // A part is open where it has a fixed-value p boundary
+    boolList open(nParts, false);
+    scalarList sum(nParts, Zero);
+    labelList n(nParts, Zero);
+    forAll(p.boundaryField(), patchi)
+    {
+        if (p.boundaryField()[patchi].fixesValue())
+        {
+            for (const label c : mesh.boundary()[patchi].faceCells())
+            {
+                open[parts[c]] = true;
+            }
+        }
+    }
+    const scalarField& diag = eqn.diag();
+    scalarField& source = eqn.source();
+    forAll(source, c)
+    {
+        if (diag[c] != 0)
+        {
+            sum[parts[c]] += source[c];
+            n[parts[c]] += 1;
+        }
+    }
+    Pstream::listCombineGather(open, orEqOp<bool>());
+    Pstream::listCombineScatter(open);
+    bodyRegions::sumLists(sum);
+    bodyRegions::sumLists(n);
+
+    scalar worst = 0;
+    forAll(source, c)
+    {
+        const label r = parts[c];
+        if (diag[c] != 0 && !open[r] && n[r] > 0)
+        {
+            source[c] -= sum[r]/n[r];
+        }
+    }
+    forAll(sum, r)
+    {
+        if (!open[r]) worst = max(worst, mag(sum[r]));
+    }
+    return worst;
 }
 
 
