@@ -34,6 +34,9 @@ print(f"relative drift of the water volume: {w:.2e}")
 PY
 cat results/summary.txt
 
+# one file per body id: t, x, y of its centroid
+rm -rf results/tracks; mkdir -p results/tracks
+awk '!/^#/ {print $1, $6, $7 > ("results/tracks/" $2 ".dat")}' "$dat"
 depth=$(foamDictionary -entry depthWater -value "$d/system/parameters")
 W=$(foamDictionary -entry W -value "$d/system/parameters")
 gnuplot <<GP || exit 1
@@ -42,13 +45,13 @@ set output 'results/heights.png'
 set xlabel 't [s]'; set ylabel 'centroid height [m]'; set grid
 set title 'Rigid bodies (rho 600) rising in water: heights (one line per body id)'
 stats '$dat' u 2 nooutput
-plot for [i=0:int(STATS_max)] '$dat' u 1:(\$2 == i ? \$7 : 1/0) w l lw 2 t sprintf('body %d', i), \
+plot for [i=0:int(STATS_max)] sprintf('results/tracks/%d.dat', i) u 1:3 w l lw 2 t sprintf('body %d', i), \
      $depth w l dt 2 lc rgb 'black' t 'water level at rest'
 set output 'results/tracks.png'
 set size ratio -1
 set xlabel 'x [m]'; set ylabel 'y [m]'; set xrange [0:$W]; set yrange [0:*]
 set title 'Tracks of the body centroids'
-plot for [i=0:int(STATS_max)] '$dat' u (\$2 == i ? \$6 : 1/0):7 w lp pt 7 ps 0.4 lw 1.5 t sprintf('body %d', i), \
+plot for [i=0:int(STATS_max)] sprintf('results/tracks/%d.dat', i) u 2:3 w lp pt 7 ps 0.4 lw 1.5 t sprintf('body %d', i), \
      $depth w l dt 2 lc rgb 'black' t 'water level at rest'
 GP
 

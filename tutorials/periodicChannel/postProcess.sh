@@ -74,14 +74,18 @@ for d in cases/*/; do
     dat="$d/postProcessing/bodies/0/bodies.dat"
     [ -f "$dat" ] || continue
     n=$(basename "$d")
+    # one file per body id: t, x, y of its centroid
+    tracks=results/tracks_$n
+    rm -rf "$tracks"; mkdir -p "$tracks"
+    awk -v o="$tracks" '!/^#/ {print $1, $6, $7 > (o "/" $2 ".dat")}' "$dat"
     gnuplot <<GP || exit 1
 set terminal pngcairo size 900,600 font ",12"
 set output 'results/trajectories_$n.png'
 set xlabel 't [s]'; set ylabel 'centroid x_2 [m]'; set grid
-set title 'Disk trajectories across the channel, $n (one line per body id)'
-set yrange [0:$(foamDictionary -entry L -value parameters)]
+set title 'Disk trajectories across the channel, $n (one line per body id)' noenhanced
 stats '$dat' u 2 nooutput
-plot for [i=0:int(STATS_max)] '$dat' u 1:(\$2 == i ? \$7 : 1/0) w l lw 1.5 notitle
+set yrange [0:$(foamDictionary -entry L -value parameters)]
+plot for [i=0:int(STATS_max)] sprintf('$tracks/%d.dat', i) u 1:3 w l lw 1.5 notitle
 GP
 done
 

@@ -5,7 +5,7 @@ Usage: pvbatch render.py CASE.foam OUT.png
 import os
 import sys
 
-from paraview.simple import (CellDatatoPointData, ColorBy, Contour,
+from paraview.simple import (Calculator, CellDatatoPointData, ColorBy, Contour,
                              GetColorTransferFunction,
                              GetScalarBar, OpenFOAMReader, SaveScreenshot,
                              Show, Slice, Text)
@@ -16,14 +16,20 @@ from whiteView import white_view  # noqa: E402
 foam, out = sys.argv[1:3]
 reader = OpenFOAMReader(FileName=foam)
 reader.MeshRegions = ["internalMesh"]
-reader.CellArrays = ["vorticity", "phis"]
+reader.CellArrays = ["vorticity", "phis", "alpha.liquid"]
 reader.UpdatePipelineInformation()
 t = reader.TimestepValues[-1]
 reader.UpdatePipeline(t)
+source = reader
+if "phis" not in reader.CellData.keys():
+    # a rigid material has no phis field: the solid is what the liquid
+    # leaves
+    source = Calculator(Input=reader, AttributeType="Cell Data",
+                        ResultArrayName="phis", Function='1 - "alpha.liquid"')
 
 bounds = reader.GetDataInformation().GetBounds()
 zmid = 0.5 * (bounds[4] + bounds[5])
-cut = Slice(Input=reader)
+cut = Slice(Input=source)
 cut.SliceType.Origin = [0, 0, zmid]
 cut.SliceType.Normal = [0, 0, 1]
 points = CellDatatoPointData(Input=cut)
