@@ -63,6 +63,9 @@ void Foam::rigidBodies::correct(volVectorField& U)
     // Which body moves each cell wholly (-1: none), numbered over all
     // rigid phases: a face is rigid only between two cells of one body
     labelList wholly(mesh.nCells(), -1);
+    // How many bodies reach each cell: a cell that two bodies reach has
+    // the velocity of neither (the second's projection blends the first's)
+    labelList reached(mesh.nCells(), 0);
 
     label nBodies = 0;
     for (const label i : materials_)
@@ -131,7 +134,16 @@ void Foam::rigidBodies::correct(volVectorField& U)
             u[c] += weight(a[c])*(Ub[b] + (omega[b] ^ r) - u[c]);
             share[c] = max(share[c], weight(a[c]));
             if (weight(a[c]) >= 1) wholly[c] = first + b;
+            if (weight(a[c]) > 0) ++reached[c];
         }
+    }
+    // A cell is rigid with a body only if no other body reaches it: else
+    // the faces between it and the body's other cells would carry a flux
+    // that is not the body's, whose divergence nothing corrects (the
+    // flux correction leaves a body's inner cells alone)
+    forAll(wholly, c)
+    {
+        if (reached[c] > 1) wholly[c] = -1;
     }
     U.correctBoundaryConditions();
     share.correctBoundaryConditions();
