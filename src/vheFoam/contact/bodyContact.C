@@ -73,9 +73,10 @@ Foam::bodyContact::bodyContact(const vheMixture& mixture)
         {
             FatalIOErrorInFunction(cd)
                 << "contact between bodies needs maxDeltaT in "
-                << runTime.system()/"controlDict" << " with adjustTimeStep: its strength"
-                << " is strength h/maxDeltaT^2 (or set contact { strength"
-                << " 0; } in constant/vheProperties)" << exit(FatalIOError);
+                << runTime.system()/"controlDict"
+                << " with adjustTimeStep: its strength is strength"
+                << " h/maxDeltaT^2 (or set contact { strength 0; } in"
+                << " constant/vheProperties)" << exit(FatalIOError);
         }
     }
 
@@ -210,18 +211,16 @@ void Foam::bodyContact::correct()
     // The proximity of every body and its gradient
     PtrList<volScalarField> psi(solids.size());
     PtrList<volVectorField> gradPsi(solids.size());
+    forAll(solids, k)
     {
-        forAll(solids, k)
-        {
-            scalarField start(mesh.nCells());
-            vhe_proximity_start
-            (
-                start.size(), alphas[solids[k]].primitiveField().cdata(),
-                start.data()
-            );
-            psi.set(k, proximity(start).ptr());
-            gradPsi.set(k, new volVectorField(fvc::grad(psi[k])));
-        }
+        scalarField start(mesh.nCells());
+        vhe_proximity_start
+        (
+            start.size(), alphas[solids[k]].primitiveField().cdata(),
+            start.data()
+        );
+        psi.set(k, proximity(start).ptr());
+        gradPsi.set(k, new volVectorField(fvc::grad(psi[k])));
     }
 
     // The local force's direction and distribution: -alpha_p psi_q
@@ -251,21 +250,21 @@ void Foam::bodyContact::correct()
             );
             depth = max(depth, min(2*a, scalar(1))*psi[kq].primitiveField());
         }
-        if (returnReduce(gMax(depth), maxOp<scalar>()) <= 0)
+        if (gMax(depth) <= 0)
         {
             continue;
         }
 
         // Each body of the phase takes the force and torque of its local
-        // contact forces in its core (fraction >= 1/2): pushed in its
-        // diffuse edge too, where the other body is pushed the other way,
-        // the edges were sheared into shreds (seen in the 40-disk
-        // channel: a cell's worth of a disk torn off for a write).
         // contact forces as a whole, as a rigid body's acceleration
         // (Glowinski's collision force on a particle): a force applied
         // where it acts, at the contact, would be nearly a gradient,
         // which the pressure takes up without moving the bodies
-        // (measured: the same smallest gap with and without it)
+        // (measured: the same smallest gap with and without it).  Only
+        // its core (fraction >= 1/2) is pushed: pushed in its diffuse
+        // edge too, where the other body is pushed the other way, the
+        // edges were sheared into shreds (seen in the 40-disk channel: a
+        // cell's worth of a disk torn off for a write)
         regions_.find(a);
         const label nB = regions_.size();
         const labelList& lab = regions_.cellBody();
