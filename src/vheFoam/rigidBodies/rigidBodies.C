@@ -4,8 +4,6 @@
 
 #include "rigidBodies.H"
 #include "syncTools.H"
-#include "regionSplit.H"
-#include "fvMatrices.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "vhe.h"
@@ -51,14 +49,6 @@ void Foam::rigidBodies::correct(volVectorField& U)
     const scalarField& V = mesh.V();
     const scalarField& rho = mixture_.rho().primitiveField();
     vectorField& u = U.primitiveFieldRef();
-
-    // How much of each cell moves with a rigid body
-    volScalarField share
-    (
-        IOobject("rigidShare", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedScalar(dimless, Zero)
-    );
 
     // Which body moves each cell wholly (-1: none), numbered over all
     // rigid phases: a face is rigid only between two cells of one body
@@ -132,7 +122,6 @@ void Foam::rigidBodies::correct(volVectorField& U)
             if (b < 0) continue;
             const vector r(regions_.nearestImage(C[c] - X0[b]) - Xm[b]);
             u[c] += weight(a[c])*(Ub[b] + (omega[b] ^ r) - u[c]);
-            share[c] = max(share[c], weight(a[c]));
             if (weight(a[c]) >= 1) wholly[c] = first + b;
             if (weight(a[c]) > 0) ++reached[c];
         }
@@ -146,7 +135,6 @@ void Foam::rigidBodies::correct(volVectorField& U)
         if (reached[c] > 1) wholly[c] = -1;
     }
     U.correctBoundaryConditions();
-    share.correctBoundaryConditions();
 
     // The faces whose two cells move wholly with one body.  (Two bodies
     // that touch: the faces between them are not rigid, else a cell
@@ -175,7 +163,7 @@ void Foam::rigidBodies::correct(volVectorField& U)
     }
     labelList whollyNbr;
     syncTools::swapBoundaryCellList(mesh, wholly, whollyNbr);
-    forAll(share.boundaryField(), patchi)
+    forAll(mesh.boundary(), patchi)
     {
         const fvPatch& pp = mesh.boundary()[patchi];
         if (pp.coupled())
@@ -191,74 +179,6 @@ void Foam::rigidBodies::correct(volVectorField& U)
     }
 
     Info<< "Rigid bodies: " << nBodies << " projected" << endl;
-}
-
-
-Foam::scalar Foam::rigidBodies::makeCompatible
-(
-    fvScalarMatrix& eqn,
-    const volScalarField& p
-) const
-{
-    const fvMesh& mesh = p.mesh();
-    const surfaceScalarField& rf = *rigidFaces_;
-    const label nInt = mesh.nInternalFaces();
-
-    // The parts of the mesh joined by open faces
-    boolList blocked(mesh.nFaces(), false);
-    for (label f = 0; f < nInt; ++f) blocked[f] = rf[f] > 0.5;
-    forAll(rf.boundaryField(), patchi)
-    {
-        const fvsPatchScalarField& rp = rf.boundaryField()[patchi];
-        const label start = mesh.boundaryMesh()[patchi].start();
-        forAll(rp, i) blocked[start + i] = rp[i] > 0.5;
-    }
-    const regionSplit parts(mesh, blocked);
-    const label nParts = parts.nRegions();
-
-    // A part is open where it has a fixed-value p boundary
-    boolList open(nParts, false);
-    scalarList sum(nParts, Zero);
-    labelList n(nParts, Zero);
-    forAll(p.boundaryField(), patchi)
-    {
-        if (p.boundaryField()[patchi].fixesValue())
-        {
-            for (const label c : mesh.boundary()[patchi].faceCells())
-            {
-                open[parts[c]] = true;
-            }
-        }
-    }
-    const scalarField& diag = eqn.diag();
-    scalarField& source = eqn.source();
-    forAll(source, c)
-    {
-        if (diag[c] != 0)
-        {
-            sum[parts[c]] += source[c];
-            n[parts[c]] += 1;
-        }
-    }
-    Pstream::listCombineGather(open, orEqOp<bool>());
-    Pstream::listCombineScatter(open);
-    bodyRegions::sumLists(sum);
-    bodyRegions::sumLists(n);
-
-    scalar worst = 0;
-    forAll(source, c)
-    {
-        const label r = parts[c];
-        if (diag[c] != 0 && !open[r] && n[r] > 0)
-        {
-            source[c] -= sum[r]/n[r];
-        }
-    }
-    forAll(sum, r)
-    {
-        if (!open[r]) worst = max(worst, mag(sum[r]));
-    }
-    return worst;
 }
 
 
