@@ -42,6 +42,24 @@ sceneCase() { vhe_scene_case "$VHE_ROOT/tutorials/$1" "${@:2}"; }
 # channelCase DIR KEY=VALUE...: the periodic channel (scene A)
 channelCase() { sceneCase periodicChannel "$@"; }
 
+# couetteWalls DIR N: the channel's walls (N x N cells) moving at -1
+# (bottom) and +1 m/s (top) in x: plane Couette flow.  blockMesh lists the
+# bottom wall's faces first, then the top's
+couetteWalls() {
+    python3 - "$1" "$2" <<'PY'
+import sys
+d, n = sys.argv[1], int(sys.argv[2])
+p = d + '/0/U'
+vals = ' '.join(['(-1 0 0)']*n + ['(1 0 0)']*n)
+s = open(p).read()
+if 'walls { type noSlip; }' not in s:
+    sys.exit(p + ': no noSlip walls to set moving')
+s = s.replace('walls { type noSlip; }',
+    'walls { type fixedValue; value nonuniform List<vector> %d (%s); }' % (2*n, vals))
+open(p, 'w').write(s)
+PY
+}
+
 # run DIR APP ARGS...: run in DIR, log to DIR/log.APP, return its status
 run() {
     local dir=$1 app=$2; shift 2

@@ -47,21 +47,15 @@ bodies
     b { material rubber; shape cylinder; centre ($c2 0.5); radius 0.1; axis (0 0 1); }
 }
 DICT
-    python3 - "$d" "$colours" "$kind" <<'PY' || return 1
+    python3 - "$d" "$colours" <<'PY' || return 1
 import re, sys
-d, colours, kind = sys.argv[1:4]
-n = 64
+d, colours = sys.argv[1:3]
 if colours:
     p = d + '/constant/vheProperties'
     s = re.sub(r'(rubber \{[^}]*)\}', r'\1 colours %s; }' % colours, open(p).read())
     open(p, 'w').write(s)
-if kind == 'shear':
-    p = d + '/0/U'
-    vals = ' '.join(['(-1 0 0)']*n + ['(1 0 0)']*n)
-    s = open(p).read().replace('walls { type noSlip; }',
-        'walls { type fixedValue; value nonuniform List<vector> %d (%s); }' % (2*n, vals))
-    open(p, 'w').write(s)
 PY
+    if [ "$kind" = shear ]; then couetteWalls "$d" 64 || return 1; fi
     run "$d" setBodies
 }
 

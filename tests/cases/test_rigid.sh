@@ -27,20 +27,15 @@ shearCase() {
 FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
 bodies { disk { material rubber; shape cylinder; centre (0.5 0.5 0.5); radius 0.1; axis (0 0 1); } }
 DICT
-    python3 - "$d" "$n" <<'PY' || return 1
+    python3 - "$d" <<'PY' || return 1
 import re, sys
-d, n = sys.argv[1], int(sys.argv[2])
+d = sys.argv[1]
 p = d + '/constant/vheProperties'
 s = re.sub(r'rubber \{[^}]*\}', 'rubber { rho [1 -3 0 0 0 0 0] $rhoDisk; '
            'mu [1 -1 -1 0 0 0 0] $mu; rigid yes; }', open(p).read())
 open(p, 'w').write(s)
-# blockMesh lists the bottom wall's faces first, then the top's
-p = d + '/0/U'
-vals = ' '.join(['(-1 0 0)']*n + ['(1 0 0)']*n)
-s = open(p).read().replace('walls { type noSlip; }',
-    'walls { type fixedValue; value nonuniform List<vector> %d (%s); }' % (2*n, vals))
-open(p, 'w').write(s)
 PY
+    couetteWalls "$d" "$n" || return 1
     run "$d" setBodies
 }
 
