@@ -575,6 +575,63 @@ void vhe_proximity_layer(long nFaces, const int *own, const int *nei,
 void vhe_contact_add(long n, const double *coef, const double *alpha,
                      const double *psi, const double *gradPsi, double *f);
 
+/* ------------------------------------------------------------------ shares */
+
+/*
+ * The colours of one material that meet no other, carried on the flux of
+ * their sum A (shares.c): K colours alpha_k (sum A), A's face flux F
+ * [m^3/s] split by what each upwind cell gives.  For internal faces
+ * own/nei index the cells; for boundary faces nei is NULL and the
+ * neighbour's value is given per face (a coupled patch's other side).
+ *
+ * vhe_share_cells: s_k = max(a_k, 0) / sum_j max(a_j, 0) in n cells (0
+ *   where no colour is positive): each cell's composition.
+ * vhe_share_flows: out[c], in[c] += the flux |F| [m^3/s] leaving and
+ *   entering cell c over each face (F > 0 from owner to neighbour).
+ * vhe_share_inflow: inK[k][c] += the flux of colour k entering cell c,
+ *   |F| times the upwind cell's share s (sNei[k][f] on boundary faces).
+ * vhe_share_mix: in cells whose outflow over dt exceeds their content
+ *   (out dt > A V, A = sum_k max(a_k, 0)), s_k = (a_k V/dt + inK_k) /
+ *   (A V/dt + in): the outflow carries content and inflow mixed.  The
+ *   others keep s.  Returns the number of such cells.
+ * vhe_share_split: out[k][f] = F[f] up[k][f] / sum_k up[.][f], up the
+ *   upwind cell's shares; where they are all zero (F is then zero), all
+ *   to colour 0.  sum_k out = F.
+ * vhe_share_meet: 1 if on some face max(a_own, a_nei) max(b_own, b_nei)
+ *   > tol (two colours a and b meet there), else 0.
+ */
+void vhe_share_cells(long n, int K, const double *const *a,
+                     double *const *s);
+void vhe_share_flows(long nFaces, const int *own, const int *nei,
+                     const double *F, double *out, double *in);
+void vhe_share_inflow(long nFaces, const int *own, const int *nei,
+                      const double *F, int K, const double *const *s,
+                      const double *const *sNei, double *const *inK);
+long vhe_share_mix(long n, int K, const double *const *a, const double *V,
+                   double dt, const double *out, const double *in,
+                   const double *const *inK, double *const *s);
+void vhe_share_split(long nFaces, int K, const double *F,
+                     const double *const *up, double *const *out);
+int vhe_share_meet(long nFaces, const int *own, const int *nei,
+                   const double *a, const double *b, const double *aNei,
+                   const double *bNei, double tol);
+
+/* ---------------------------------------------------------------- compress */
+
+/*
+ * vhe_compress_pair: interface compression of phase i against phase j on
+ * nFaces faces (compress.c), multiphaseMixture's with linear face values:
+ * C = phic (n . Sf) a_i a_j, n = g/(|g| + deltaN), g = a_j grad a_i -
+ * a_i grad a_j; fi += C, fj -= C (faces with a_i a_j < 1e-15, where C
+ * is below round-off, skipped).  phic [m/s]; Sf [m^2] and the face
+ * gradients gi, gj [1/m] 3 per face; ai, aj face values; deltaN [1/m];
+ * fi, fj the phases' fluxes [m^3/s].
+ */
+void vhe_compress_pair(long nFaces, const double *phic, const double *Sf,
+                       const double *ai, const double *aj, const double *gi,
+                       const double *gj, double deltaN, double *fi,
+                       double *fj);
+
 #ifdef __cplusplus
 }
 #endif

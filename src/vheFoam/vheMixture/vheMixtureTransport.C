@@ -1,0 +1,444 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: phase-averaged gas/liquid/solid mixture -- transport of the
+  phase fractions (MULES with interface compression between every pair of
+  phases that meet, multiphaseInterFoam's method); the colours of a
+  material that meet no other carried as shares of their sum's flux
+\*---------------------------------------------------------------------------*/
+
+#include "vheMixture.H"
+#include "colourShares.H"
+#include "fvc.H"
+#include "MULES.H"
+#include "upwind.H"
+#include "HashTable.H"
+#include "profiling.H"
+#include "vheFlat.H"
+#include "vhe.h"
+
+// * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
+
+void Foam::vheMixture::solveAlphaStep
+(
+    const labelList& active,
+    scalar cAlpha,
+    label nLimitSumIter,
+    scalar deltaT,
+    scalar weight
+)
+{
+    const word alphaScheme("div(phi,alpha)");
+
+    // The fields MULES transports.  A solid material with two or more
+    // active colours: each colour that meets another (bodies of two
+    // colours touching) is a phase of its own, compressed against the
+    // colours it meets; the colours that meet none are transported as one
+    // phase, their sum, and carried on its flux afterwards (colourShares).
+    // Fields of one material that do not meet are not compressed against
+    // each other (their compression is below 1e-10).
+    HashTable<labelList, word> coloursOf;
+    wordList materials;
+    for (const label i : active)
+    {
+        if (!isSolid_[i]) continue;
+        if (!coloursOf.found(phases_[i].material))
+        {
+            materials.append(phases_[i].material);
+        }
+        coloursOf(phases_[i].material).append(i);
+    }
+    const label nMax = active.size() + materials.size();
+    UPtrList<volScalarField> fields(nMax);
+    List<scalar> rhoF(nMax);
+    List<bool> solidF(nMax);
+    List<labelList> carried(nMax);      // the colours a sum carries
+    labelList matOf(nMax, -1);          // material (index), -1: a fluid
+    labelList colOf(nMax, -1);          // colour in meet (-1: meets none)
+    List<labelList> meets(materials.size());
+    PtrList<volScalarField> sums(nMax);
+    label n = 0;
+    const auto add = [&](volScalarField* f, const phase& ph, label m, label c)
+    {
+        fields.set(n, f);
+        rhoF[n] = ph.rho;
+        solidF[n] = ph.solid;
+        matOf[n] = m;
+        colOf[n] = c;
+        return n++;
+    };
+    for (const label i : active)
+    {
+        const phase& ph = phases_[i];
+        if (!ph.solid)
+        {
+            add(&alphas_[i], ph, -1, -1);
+            continue;
+        }
+        const label m = materials.find(ph.material);
+        const labelList& cols = coloursOf[ph.material];
+        if (cols[0] != i) continue;     // the material's first colour adds all
+        const label K = cols.size();
+        if (K == 1)
+        {
+            add(&alphas_[i], ph, m, -1);
+            continue;
+        }
+        UPtrList<volScalarField> colours(K);
+        forAll(cols, k) colours.set(k, &alphas_[cols[k]]);
+        meets[m] = colourShares::meeting(colours);
+        labelList lump;
+        for (label k = 0; k < K; ++k)
+        {
+            bool meetsAny = false;
+            for (label l = 0; l < K; ++l) meetsAny = meetsAny || meets[m][k*K + l];
+            if (meetsAny) add(&alphas_[cols[k]], ph, m, k);
+            else lump.append(cols[k]);
+        }
+        if (lump.size() == 1)
+        {
+            add(&alphas_[lump[0]], ph, m, -1);
+        }
+        else if (lump.size() > 1)
+        {
+            // Their sum, old time first, with colour 0's boundary types
+            const auto sumOf = [&](const bool old)
+            {
+                tmp<volScalarField> tsum
+                (
+                    new volScalarField
+                    (
+                        IOobject
+                        (
+                            "alpha." + ph.material + ".sum",
+                            mesh_.time().timeName(), mesh_,
+                            IOobject::NO_READ, IOobject::NO_WRITE, false
+                        ),
+                        mesh_,
+                        dimensionedScalar(dimless, Zero),
+                        alphas_[i].boundaryField().types()
+                    )
+                );
+                volScalarField& sum = tsum.ref();
+                for (const label c : lump)
+                {
+                    const volScalarField& ac =
+                        old ? alphas_[c].oldTime() : alphas_[c];
+                    sum.primitiveFieldRef() += ac.primitiveField();
+                    forAll(sum.boundaryField(), patchi)
+                    {
+                        sum.boundaryFieldRef()[patchi] ==
+                            sum.boundaryField()[patchi]
+                          + ac.boundaryField()[patchi];
+                    }
+                }
+                return tsum;
+            };
+            sums.set(n, sumOf(true));
+            sums[n].oldTime();
+            sums[n] == sumOf(false)();
+            carried[n] = lump;
+            add(&sums[n], ph, m, -1);
+        }
+    }
+    fields.setSize(n);
+
+    // The pairs of fields compressed against each other
+    List<bool> pairOn(n*(n - 1)/2, true);
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = i + 1; j < n; ++j)
+        {
+            const label m = matOf[i];
+            if (m < 0 || matOf[j] != m) continue;
+            const label K = coloursOf[materials[m]].size();
+            pairOn[pairIndex(i, j, n)] =
+                colOf[i] >= 0 && colOf[j] >= 0
+             && meets[m][colOf[i]*K + colOf[j]];
+        }
+    }
+
+    surfaceScalarField phic(mag(phi_/mesh_.magSf()));
+    phic = min(cAlpha*phic, max(phic));
+
+    addProfiling(mules, "vheMixture::MULES");
+
+    PtrList<surfaceScalarField> alphaPhis(n);
+
+    // MULES: field i's full flux in, its limited correction to the upwind
+    // flux out (returnCorr), bounds [0, 1]
+    const auto limitCorrection = [&](const label i)
+    {
+        MULES::limit
+        (
+            1.0/deltaT,
+            geometricOneField(),
+            fields[i],
+            phi_,
+            alphaPhis[i],
+            zeroField(),
+            zeroField(),
+            oneField(),
+            zeroField(),
+            true
+        );
+    };
+    // Each field's high-order flux, then the interface compression of
+    // every pair that is on (multiphaseMixture's, linear face values; the
+    // C core, one pass over the faces per pair), then MULES's limiter
+    PtrList<surfaceScalarField> af(n);
+    PtrList<surfaceVectorField> gf(n);
+    for (label i = 0; i < n; ++i)
+    {
+        alphaPhis.set
+        (
+            i,
+            new surfaceScalarField
+            (
+                "alphaPhi." + fields[i].name(),
+                fvc::flux(phi_, fields[i], alphaScheme)
+            )
+        );
+        af.set(i, fvc::interpolate(fields[i]));
+        gf.set(i, fvc::interpolate(fvc::grad(fields[i])));
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = i + 1; j < n; ++j)
+        {
+            if (!pairOn[pairIndex(i, j, n)]) continue;
+            vhe_compress_pair
+            (
+                mesh_.nInternalFaces(), phic.primitiveField().cdata(),
+                flat(mesh_.Sf().primitiveField()),
+                af[i].primitiveField().cdata(), af[j].primitiveField().cdata(),
+                flat(gf[i].primitiveField()), flat(gf[j].primitiveField()),
+                deltaN_.value(), alphaPhis[i].primitiveFieldRef().data(),
+                alphaPhis[j].primitiveFieldRef().data()
+            );
+            forAll(mesh_.boundary(), patchi)
+            {
+                vhe_compress_pair
+                (
+                    mesh_.boundary()[patchi].size(),
+                    phic.boundaryField()[patchi].cdata(),
+                    flat(mesh_.Sf().boundaryField()[patchi]),
+                    af[i].boundaryField()[patchi].cdata(),
+                    af[j].boundaryField()[patchi].cdata(),
+                    flat(gf[i].boundaryField()[patchi]),
+                    flat(gf[j].boundaryField()[patchi]), deltaN_.value(),
+                    alphaPhis[i].boundaryFieldRef()[patchi].data(),
+                    alphaPhis[j].boundaryFieldRef()[patchi].data()
+                );
+            }
+        }
+    }
+    af.clear();
+    gf.clear();
+    for (label i = 0; i < n; ++i)
+    {
+        limitCorrection(i);
+    }
+
+    MULES::limitSum(alphaPhis);
+
+    // Full fluxes: the bounded low-order (upwind) part plus the limited
+    // correction; the upwind parts are kept only for re-limiting
+    PtrList<surfaceScalarField> alphaPhiUDs(nLimitSumIter > 0 ? n : 0);
+    for (label i = 0; i < n; ++i)
+    {
+        tmp<surfaceScalarField> tUD(upwind<scalar>(mesh_, phi_).flux(fields[i]));
+        alphaPhis[i] += tUD();
+        if (nLimitSumIter > 0)
+        {
+            alphaPhiUDs.set(i, tUD.ptr());
+        }
+    }
+
+    // Explicit update from the sub-step's old value (MULES::explicitSolve
+    // with unit density, written out so that sub-steps are exact)
+    const auto update = [&](const label i)
+    {
+        return tmp<scalarField>
+        (
+            fields[i].oldTime().primitiveField()
+          - deltaT*fvc::surfaceIntegrate(alphaPhis[i])().primitiveField()
+        );
+    };
+
+    // limitSum scales some fields' corrections down to make them sum to
+    // zero; where three or more fields meet, that can take one out of its
+    // bounds (multiphaseMixture's alphas leave [0, 1] by ~1e-5).  So the
+    // update is checked first, and a step where a field would fall below 0
+    // by more than 1e-9 is limited again and re-summed, up to nLimitSumIter
+    // times: the cost is paid only where it is needed (one step in ten in
+    // the floatingBlock tutorial).  Overshoots above 1 need no pass: the
+    // sum correction below takes them out once all are >= 0.  The last
+    // check's update is the step's.
+    PtrList<scalarField> alphaNew(n);
+    for (label iter = 0; nLimitSumIter > 0; ++iter)
+    {
+        scalar lo = GREAT;
+        for (label i = 0; i < n; ++i)
+        {
+            alphaNew.set(i, update(i).ptr());
+            lo = min(lo, min(alphaNew[i]));
+        }
+        reduce(lo, minOp<scalar>());
+        if (lo >= -1e-9 || iter == nLimitSumIter)
+        {
+            break;
+        }
+        for (label i = 0; i < n; ++i)
+        {
+            limitCorrection(i);
+        }
+        MULES::limitSum(alphaPhis);
+        for (label i = 0; i < n; ++i)
+        {
+            alphaPhis[i] += alphaPhiUDs[i];
+        }
+    }
+
+    endProfiling(mules);
+
+    // The colours a sum carries, on its flux
+    for (label i = 0; i < n; ++i)
+    {
+        if (carried[i].empty()) continue;
+        UPtrList<volScalarField> colours(carried[i].size());
+        forAll(carried[i], c)
+        {
+            colours.set(c, &alphas_[carried[i][c]]);
+        }
+        colourShares::transport(colours, alphaPhis[i], deltaT);
+    }
+
+    rhoPhi_ = dimensionedScalar(rhoPhi_.dimensions(), Zero);
+    for (label i = 0; i < n; ++i)
+    {
+        volScalarField& alpha = fields[i];
+        const surfaceScalarField& alphaPhi = alphaPhis[i];
+
+        // The update of the bounds check when there was one
+        alpha.primitiveFieldRef() =
+            alphaNew.set(i) ? alphaNew[i] : update(i)();
+        alpha.correctBoundaryConditions();
+
+        rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, rhoF[i]);
+        if (solidF[i])
+        {
+            *alphaPhiSolid_ += weight*alphaPhi;
+        }
+    }
+
+    // Remove the round-off drift of the sum, as multiphaseMixture
+    scalarField sumAlpha(mesh_.nCells(), 0);
+    for (const label i : active)
+    {
+        sumAlpha += alphas_[i].primitiveField();
+    }
+    const scalarField sumCorr(1.0 - sumAlpha);
+    for (volScalarField& alpha : alphas_)
+    {
+        alpha.primitiveFieldRef() += alpha.primitiveField()*sumCorr;
+        alpha.correctBoundaryConditions();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::vheMixture::solve()
+{
+    if (alphas_.size() < 2)
+    {
+        rhoPhi_ = fvc::interpolate(rho_)*phi_;
+        return;
+    }
+
+    // The interface compression takes linear face values (the C core)
+    {
+        ITstream& is = mesh_.divScheme("div(phirb,alpha)");
+        const word gauss(is), interp(is);
+        if (gauss != "Gauss" || interp != "linear" || !is.eof())
+        {
+            FatalIOErrorInFunction(mesh_.schemesDict())
+                << "div(phirb,alpha) must be 'Gauss linear' (the interface"
+                << " compression takes linear face values), got '"
+                << is.toString() << "'" << exit(FatalIOError);
+        }
+    }
+
+    const dictionary& alphaControls = mesh_.solverDict("alpha");
+    const label nSub = alphaControls.getOrDefault<label>("nAlphaSubCycles", 1);
+    const scalar cAlpha = alphaControls.getOrDefault<scalar>("cAlpha", 1);
+    // The phases with content: an empty phase (a colour no body has now)
+    // has zero fluxes and zero compression against every other, exactly,
+    // so it is left out, and a material's spare colours cost nothing
+    DynamicList<label> act(alphas_.size());
+    forAll(alphas_, i)
+    {
+        const volScalarField& a = alphas_[i];
+        scalar m = gMax(mag(a.primitiveField())());
+        for (const fvPatchScalarField& pf : a.boundaryField())
+        {
+            if (pf.size()) m = max(m, max(mag(pf)));
+        }
+        if (returnReduce(m, maxOp<scalar>()) > 0) act.append(i);
+    }
+    const labelList active(act);
+    // Two phases need no re-limiting: their corrections are exact opposites
+    const label nLimitSumIter = alphaControls.getOrDefault<label>
+    (
+        "nLimitSumIter", active.size() > 2 ? 2 : 0
+    );
+    if (nSub < 1)
+    {
+        FatalIOErrorInFunction(alphaControls)
+            << "nAlphaSubCycles must be >= 1, got " << nSub
+            << exit(FatalIOError);
+    }
+
+    const scalar deltaT = mesh_.time().deltaTValue();
+
+    if (nSolids_)
+    {
+        *alphaPhiSolid_ = dimensionedScalar(dimVolume/dimTime, Zero);
+    }
+
+    if (nSub == 1)
+    {
+        solveAlphaStep(active, cAlpha, nLimitSumIter, deltaT, 1);
+    }
+    else
+    {
+        // Each sub-step restarts from its own old value; the true old-time
+        // values are put back afterwards for the next PIMPLE iteration.
+        PtrList<volScalarField> alpha0(alphas_.size());
+        forAll(alphas_, i)
+        {
+            alpha0.set(i, new volScalarField("alpha0", alphas_[i].oldTime()));
+        }
+        surfaceScalarField rhoPhiSum("rhoPhiSum", 0*rhoPhi_);
+
+        for (label s = 0; s < nSub; ++s)
+        {
+            if (s > 0)
+            {
+                for (volScalarField& alpha : alphas_) alpha.oldTime() == alpha;
+            }
+            solveAlphaStep
+            (
+                active, cAlpha, nLimitSumIter, deltaT/nSub, 1.0/nSub
+            );
+            rhoPhiSum += rhoPhi_/scalar(nSub);
+        }
+        forAll(alphas_, i) alphas_[i].oldTime() == alpha0[i];
+        rhoPhi_ = rhoPhiSum;
+    }
+
+    correct();
+    report();
+}
+
+
+// ************************************************************************* //
