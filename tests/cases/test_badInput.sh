@@ -118,6 +118,8 @@ d=$(variant unknownPrescribedVelocity); sed -i 's/^    pRefValue .*/&\n    presc
 expectFatal unknownPrescribedVelocity "$d" vheFoam "Unknown prescribedVelocity type 'swirl'" fvSolution
 d=$(variant unsupportedDdtScheme); setEntry "$d/system/fvSchemes" ddtSchemes/default CrankNicolson
 expectFatal unsupportedDdtScheme "$d" vheFoam "ddt\(rho,U\) scheme 'CrankNicolson' is not supported" fvSchemes
+d=$(variant nonlinearCompression); setEntry "$d/system/fvSchemes" "divSchemes/div(phirb,alpha)" "Gauss vanLeer"
+expectFatal nonlinearCompression "$d" vheFoam "div\(phirb,alpha\) must be 'Gauss linear'" fvSchemes
 d=$(variant backwardExplicit); setEntry "$d/system/fvSchemes" ddtSchemes/default backward
 sed -i 's/^    pRefValue .*/&\n    elasticity explicit;/' "$d/system/fvSolution"
 expectFatal backwardExplicit "$d" vheFoam "backward needs PIMPLE \{ elasticity semiImplicit; \}" fvSchemes

@@ -382,6 +382,10 @@ Foam::vheMixture::vheMixture
 
     readAlphas();
     checkAlphas();
+    if (alphas_.size() > 1)
+    {
+        checkSchemes();
+    }
 
     if (nSolids_)
     {

@@ -17,6 +17,22 @@
 
 // * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
 
+void Foam::vheMixture::checkSchemes() const
+{
+    // The interface compression takes linear face values (the C core)
+    ITstream& is = mesh_.divScheme("div(phirb,alpha)");
+    const word gauss(is), interp(is);
+    if (gauss != "Gauss" || interp != "linear" || !is.eof())
+    {
+        FatalIOErrorInFunction(mesh_.schemesDict())
+            << "div(phirb,alpha) must be 'Gauss linear' (the interface"
+            << " compression takes linear face values), got '" << gauss
+            << ' ' << interp << (is.eof() ? "" : " ...") << "'"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::vheMixture::solveAlphaStep
 (
     const labelList& active,
@@ -39,7 +55,7 @@ void Foam::vheMixture::solveAlphaStep
     wordList materials;
     for (const label i : active)
     {
-        if (!isSolid_[i]) continue;
+        if (!phases_[i].solid) continue;
         if (!coloursOf.found(phases_[i].material))
         {
             materials.append(phases_[i].material);
@@ -49,7 +65,7 @@ void Foam::vheMixture::solveAlphaStep
     const label nMax = active.size() + materials.size();
     UPtrList<volScalarField> fields(nMax);
     List<scalar> rhoF(nMax);
-    List<bool> solidF(nMax);
+    List<bool> solidF(nMax);             // elastic: its flux carries B*
     List<labelList> carried(nMax);      // the colours a sum carries
     labelList matOf(nMax, -1);          // material (index), -1: a fluid
     labelList colOf(nMax, -1);          // colour in meet (-1: meets none)
@@ -60,7 +76,7 @@ void Foam::vheMixture::solveAlphaStep
     {
         fields.set(n, f);
         rhoF[n] = ph.rho;
-        solidF[n] = ph.solid;
+        solidF[n] = ph.solid && !ph.rigid;    // B* is carried with elastic solids
         matOf[n] = m;
         colOf[n] = c;
         return n++;
@@ -353,19 +369,6 @@ void Foam::vheMixture::solve()
     {
         rhoPhi_ = fvc::interpolate(rho_)*phi_;
         return;
-    }
-
-    // The interface compression takes linear face values (the C core)
-    {
-        ITstream& is = mesh_.divScheme("div(phirb,alpha)");
-        const word gauss(is), interp(is);
-        if (gauss != "Gauss" || interp != "linear" || !is.eof())
-        {
-            FatalIOErrorInFunction(mesh_.schemesDict())
-                << "div(phirb,alpha) must be 'Gauss linear' (the interface"
-                << " compression takes linear face values), got '"
-                << is.toString() << "'" << exit(FatalIOError);
-        }
     }
 
     const dictionary& alphaControls = mesh_.solverDict("alpha");
