@@ -105,7 +105,7 @@ int main(int argc, char *argv[])
             #include "BStretch.H"
         }
 
-        if (colours.active()) colours.correct();
+        if (colours.active()) colours.correct(CoNum);
 
         runTime.write();
 

@@ -5,7 +5,6 @@
 #include "bodyColours.H"
 #include "volFields.H"
 #include "syncTools.H"
-#include "fvcSurfaceIntegrate.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -234,18 +233,12 @@ void Foam::bodyColours::correct(const labelList& phases)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::bodyColours::correct()
+void Foam::bodyColours::correct(const scalar CoNum)
 {
     // How far the fastest material point moved this step, in cells: the
-    // flow Courant number (CourantNo.H's)
+    // flow Courant number of the step (CourantNo.H's)
     const fvMesh& mesh = mixture_.rho().mesh();
-    const surfaceScalarField& phi =
-        mesh.lookupObject<surfaceScalarField>("phi");
-    travelled_ +=
-        0.5*gMax
-        (
-            fvc::surfaceSum(mag(phi))().primitiveField()/mesh.V().field()
-        )*mesh.time().deltaTValue();
+    travelled_ += CoNum;
     if (travelled_ < maxTravel && !mesh.changing())
     {
         return;

@@ -17,6 +17,7 @@ Foam::bodyContact::bodyContact(const vheMixture& mixture)
     strength_(0),
     dtRef_(1),
     h_(),
+    coupled_(),
     regions_(mixture.rho().mesh(), 0.5),
     force_()
 {
@@ -115,6 +116,7 @@ void Foam::bodyContact::cellSizes()
         else ++nD;
     }
     h_ = pow(mesh.V().field()/depth, 1.0/max(nD, label(1)));
+    coupled_ = bodyRegions::coupledFaces(mesh);
 }
 
 
@@ -140,7 +142,7 @@ Foam::tmp<Foam::volScalarField> Foam::bodyContact::proximity
     const labelUList& own = mesh.faceOwner();
     const labelUList& nei = mesh.faceNeighbour();
     const label nInt = mesh.nInternalFaces();
-    const boolList coupled(bodyRegions::coupledFaces(mesh));
+    const boolList& coupled = coupled_;
     const scalar step = 1/range_;
     for (label layer = 0; layer < std::ceil(range_); ++layer)
     {

@@ -183,6 +183,7 @@ void Foam::vheMixture::solveAlphaStep
     // flux out (returnCorr), bounds [0, 1]
     const auto limitCorrection = [&](const label i)
     {
+        addProfiling(limit, "vheMixture::MULES::limit");
         MULES::limit
         (
             1.0/deltaT,
