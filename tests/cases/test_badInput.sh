@@ -67,7 +67,7 @@ expectFatal hugeG "$d" vheFoam "G of rubber is 1e\+300 Pa, above 1e\+20 Pa" vheP
 d=$(variant rigidWithG); foamDictionary -entry solids/rubber/rigid -add yes "$d/$P" > /dev/null
 expectFatal rigidWithG "$d" vheFoam "G has no meaning for the rigid material rubber" vheProperties
 d=$(variant contactRange); echo "contact { range 3; }" >> "$d/$P"
-expectFatal contactRange "$d" vheFoam "contact \{ range \} must lie in \[1, 1.5\] cells" vheProperties
+expectFatal contactRange "$d" vheFoam "contact \{ range \} must lie in \[1, 2\] cells" vheProperties
 d=$(variant contactStrength); echo "contact { strength -1; }" >> "$d/$P"
 expectFatal contactStrength "$d" vheFoam "contact \{ strength \} must lie in \[0, 2\]" vheProperties
 d=$(variant contactEntry); echo "contact { stiffness 1; }" >> "$d/$P"

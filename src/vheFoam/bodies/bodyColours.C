@@ -92,9 +92,7 @@ void Foam::bodyColours::correct(const labelList& phases)
     // off a body (seen: a cell of fraction 0.9 split from a disk pressed
     // on a wall, then decaying) would be counted as a second body of its
     // colour, and the disk moved away from it, its shred left behind
-    const scalar minVolume =
-        minBodyCells*gSum(mesh.V().field())
-       /returnReduce(mesh.nCells(), sumOp<label>());
+    const scalar minVolume = regions_.minBodyVolume();
     labelList nBodies(nc, 0);
     forAll(phases, k)
     {

@@ -43,6 +43,13 @@ Foam::boolList Foam::bodyRegions::coupledFaces(const fvMesh& mesh)
 }
 
 
+Foam::scalar Foam::bodyRegions::minBodyVolume() const
+{
+    return minBodyCells*gSum(mesh_.V().field())
+       /returnReduce(mesh_.nCells(), sumOp<label>());
+}
+
+
 Foam::bodyRegions::bodyRegions(const fvMesh& mesh, const scalar threshold)
 :
     mesh_(mesh),
