@@ -152,7 +152,10 @@ void Foam::colourShares::transport
 
     const scalarField& Fi = F.primitiveField();
     scalarField out(mesh.nCells(), Zero), in(mesh.nCells(), Zero);
-    vhe_share_flows(nInt, own.cdata(), nei.cdata(), Fi.cdata(), out.data(), in.data());
+    vhe_share_flows
+    (
+        nInt, own.cdata(), nei.cdata(), Fi.cdata(), out.data(), in.data()
+    );
     forAll(mesh.boundary(), patchi)
     {
         const labelUList& fc = mesh.boundary()[patchi].faceCells();
