@@ -46,6 +46,23 @@ Foam::labelList Foam::colourShares::meeting
     const labelUList& nei = mesh.neighbour();
 
     addProfiling(meets, "colourShares::meet");
+
+    // Each colour's values across each coupled patch, once
+    List<PtrList<scalarField>> across(K);
+    for (label k = 0; k < K; ++k)
+    {
+        across[k].setSize(mesh.boundary().size());
+        forAll(mesh.boundary(), patchi)
+        {
+            if (!mesh.boundary()[patchi].coupled()) continue;
+            across[k].set
+            (
+                patchi,
+                neighbourValues(colours[k].boundaryField()[patchi]).ptr()
+            );
+        }
+    }
+
     labelList meet(K*K, Zero);
     for (label k = 0; k < K; ++k)
     {
@@ -60,20 +77,13 @@ Foam::labelList Foam::colourShares::meeting
             );
             forAll(mesh.boundary(), patchi)
             {
-                if (m || !mesh.boundary()[patchi].coupled()) continue;
+                if (m || !across[k].set(patchi)) continue;
                 const labelUList& fc = mesh.boundary()[patchi].faceCells();
-                const tmp<scalarField> an
-                (
-                    neighbourValues(colours[k].boundaryField()[patchi])
-                );
-                const tmp<scalarField> bn
-                (
-                    neighbourValues(colours[l].boundaryField()[patchi])
-                );
                 m = vhe_share_meet
                 (
                     fc.size(), fc.cdata(), nullptr, a.cdata(), b.cdata(),
-                    an().cdata(), bn().cdata(), meetTol
+                    across[k][patchi].cdata(), across[l][patchi].cdata(),
+                    meetTol
                 );
             }
             meet[k*K + l] = m;
