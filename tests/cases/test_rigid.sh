@@ -48,7 +48,7 @@ read -r werr xerr verr dmax <<< "$(awk '!/^#/ && $1 >= 0.25 {
         if (!v0) v0 = $5; if ($15 > dm) dm = $15
     } !/^#/ {if (!v0) v0 = $5; dv = $5/v0 - 1; if (dv < 0) dv = -dv; if (dv > ve) ve = dv}
     END {printf "%.3e %.3e %.3e %.3e\n", we, xe, ve, dm}' "$sh/$dat")"
-check shearRotation "$werr < 0.02" "largest |omega_z/(-1 rad/s) - 1| $werr over 0.25 <= t <= 0.5"
+check shearRotation "$werr < 0.025" "largest |omega_z/(-1 rad/s) - 1| $werr over 0.25 <= t <= 0.5"
 check shearStays "$xerr < 1e-6" "largest distance of the centroid from the centre $xerr m"
 check shearVolume "$verr < 1e-6" "largest volume drift $verr"
 check shearShape "$dmax < 0.02" "largest Taylor deformation $dmax"
