@@ -23,8 +23,8 @@ namespace
 }
 
 const Foam::scalar Foam::rigidBodies::penalty = 1e3;
-const Foam::scalar Foam::rigidBodies::tolerance = 1e-4;
-const Foam::label Foam::rigidBodies::maxIter = 30;
+const Foam::scalar Foam::rigidBodies::tolerance = 1e-3;
+const Foam::label Foam::rigidBodies::maxIter = 10;
 
 
 Foam::rigidBodies::rigidBodies(const vheMixture& mixture)
@@ -237,8 +237,11 @@ void Foam::rigidBodies::solve
     );
 
     List<vector> xV0(Ub), xW0(omega), zV0(nBodies_), zW0(nBodies_);
-    // The secant factors: the last step's (they change slowly), or 1
-    if (thetaV_.size() != nBodies_)
+    // The secant factors: the last step's (they change slowly), or 1;
+    // the velocity error is theta |K0^-1 R| with a secant factor of this
+    // solve or the last step's, |K0^-1 R| (theta <= 1) with fresh ones
+    const bool fresh = (thetaV_.size() != nBodies_);
+    if (fresh)
     {
         thetaV_ = List<vector>(nBodies_, vector::one);
         thetaW_ = List<vector>(nBodies_, vector::one);
@@ -304,8 +307,10 @@ void Foam::rigidBodies::solve
                 zW0[b][d] = zW[d];
                 Ub[b][d] += thV[b][d]*zV[d];
                 omega[b][d] += thW[b][d]*zW[d];
-                change = max(change, mag(zV[d]));
-                change = max(change, mag(zW[d])*Rg[b]);
+                const scalar tV = (fresh && iter == 1) ? 1 : thV[b][d];
+                const scalar tW = (fresh && iter == 1) ? 1 : thW[b][d];
+                change = max(change, mag(tV*zV[d]));
+                change = max(change, mag(tW*zW[d])*Rg[b]);
             }
         }
         change /= Uscale;
