@@ -23,7 +23,7 @@ namespace
 }
 
 const Foam::scalar Foam::rigidBodies::penalty = 1e3;
-const Foam::scalar Foam::rigidBodies::tolerance = 1e-3;
+const Foam::scalar Foam::rigidBodies::tolerance = 1e-6;
 const Foam::label Foam::rigidBodies::maxIter = 10;
 
 
