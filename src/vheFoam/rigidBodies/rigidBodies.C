@@ -236,6 +236,26 @@ void Foam::rigidBodies::solve
         dimensionedVector(dimVelocity, Zero)
     );
 
+    // The penalty raises the matrix's residual normalisation by up to P,
+    // and the body's net force is P times the held cells' small velocity
+    // error: U's tolerance divided by P (and no relTol), else the force
+    // is the solver's noise
+    dictionary solverDict
+    (
+        mesh.solverDict
+        (
+            U.select
+            (
+                mesh.data::template lookupOrDefault<bool>
+                (
+                    "finalIteration", false
+                )
+            )
+        )
+    );
+    solverDict.set("tolerance", solverDict.get<scalar>("tolerance")/penalty);
+    solverDict.set("relTol", scalar(0));
+
     List<vector> xV0(Ub), xW0(omega), zV0(nBodies_), zW0(nBodies_);
     // The secant factors: the last step's (they change slowly), or 1;
     // the velocity error is theta |K0^-1 R| with a secant factor of this
@@ -253,7 +273,8 @@ void Foam::rigidBodies::solve
     for (iter = 1; iter <= maxIter; ++iter)
     {
         UR.primitiveFieldRef() = rigidField(Ub, omega);
-        Foam::solve(UEqn + fvm::Sp(Cp, U) == rhs + Cp*UR);
+        fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U) == rhs + Cp*UR);
+        UEqnHeld.solve(solverDict);
 
         // The penalty's net force and torque on each body
         const vectorField f(cp*(UR.primitiveField() - U.primitiveField())*V);
