@@ -11,6 +11,7 @@
 #include "fvmSup.H"
 #include "fvcSup.H"
 #include "fvmDdt.H"
+#include "scalarMatrices.H"
 
 namespace
 {
@@ -23,7 +24,7 @@ namespace
 }
 
 const Foam::scalar Foam::rigidBodies::penalty = 1e3;
-const Foam::scalar Foam::rigidBodies::tolerance = 1e-6;
+const Foam::scalar Foam::rigidBodies::tolerance = 1e-5;
 const Foam::label Foam::rigidBodies::maxIter = 10;
 
 
@@ -204,10 +205,8 @@ void Foam::rigidBodies::solve
         cp[c] = A[c]*(w_[c] < 1 ? min(penalty, w_[c]/(1 - w_[c])) : penalty);
     }
 
-    // The preconditioner K0: each body's inertia over the step (the time
-    // derivative's share of A), in translation and rotation.  The true
-    // resistance K adds added mass and viscous drag, so theta = K0/K is
-    // at most 1 and |K0^-1 R| bounds the velocity error
+    // Each body's inertia over the step K0 (the time derivative's share
+    // of A), in translation and rotation: the preconditioner's base
     const volScalarField Ai(fvm::ddt(mixture_.rho(), U)().A());
     scalarList KV(nBodies_, Zero);
     List<symmTensor> KJ(nBodies_, Zero);
@@ -225,6 +224,37 @@ void Foam::rigidBodies::solve
     scalarList Rg(nBodies_);
     forAll(Rg, b) Rg[b] = Foam::sqrt(tr(J_[b])/max(M_[b], VSMALL));
 
+    // The viscous drag's share of the resistance, estimated from Stokes
+    // drag over a step: a body of gyration radius Rg in a liquid of
+    // viscosity mu resists a change of its velocity by about
+    // (1 + cV nu dt/Rg^2) its inertia, of its rotation by (1 + cW nu
+    // dt/Rg^2) (cV 2, cW 6: a disk's or a sphere's within a factor of 2);
+    // the preconditioner K0 (1 + c nu dt/Rg^2) leaves the coupling
+    // between bodies to the acceleration
+    scalarList dragV(nBodies_, Zero), dragW(nBodies_, Zero);
+    {
+        const scalarField& mu = mixture_.mu().primitiveField();
+        const scalarField& rho = mixture_.rho().primitiveField();
+        scalarList nuSum(nBodies_, Zero), wSum(nBodies_, Zero);
+        forAll(body_, c)
+        {
+            const label b = body_[c];
+            if (b < 0) continue;
+            nuSum[b] += w_[c]*V[c]*mu[c]/rho[c];
+            wSum[b] += w_[c]*V[c];
+        }
+        bodyRegions::sumLists(nuSum);
+        bodyRegions::sumLists(wSum);
+        const scalar dt = mesh.time().deltaTValue();
+        forAll(dragV, b)
+        {
+            const scalar vn =
+                nuSum[b]/max(wSum[b], VSMALL)*dt/max(sqr(Rg[b]), VSMALL);
+            dragV[b] = 1 + 2*vn;
+            dragW[b] = 1 + 6*vn;
+        }
+    }
+
     // Start from the last projection's rigid motion
     List<vector> Ub, omega;
     rigidMotion(U.primitiveField(), Ub, omega);
@@ -239,7 +269,8 @@ void Foam::rigidBodies::solve
     // The penalty raises the matrix's residual normalisation by up to P,
     // and the body's net force is P times the held cells' small velocity
     // error: U's tolerance divided by P (and no relTol), else the force
-    // is the solver's noise
+    // is the solver's noise (the fixed point stalled at 1e-3 to 5e-2 of
+    // |U|max with 38 touching disks)
     dictionary solverDict
     (
         mesh.solverDict
@@ -256,44 +287,60 @@ void Foam::rigidBodies::solve
     solverDict.set("tolerance", solverDict.get<scalar>("tolerance")/penalty);
     solverDict.set("relTol", scalar(0));
 
-    List<vector> xV0(Ub), xW0(omega), zV0(nBodies_), zW0(nBodies_);
-    // The secant factors: the last step's (they change slowly), or 1;
-    // the velocity error is theta |K0^-1 R| with a secant factor of this
-    // solve or the last step's, |K0^-1 R| (theta <= 1) with fresh ones
-    const bool fresh = (thetaV_.size() != nBodies_);
-    if (fresh)
+    // The unknowns in velocity units, 6 per body: U_b and Rg omega
+    const label n = 6*nBodies_;
+    scalarList x(n), g(n, Zero), f(n, Zero), xPrev(n), fPrev(n);
+    forAll(Ub, b)
     {
-        thetaV_ = List<vector>(nBodies_, vector::one);
-        thetaW_ = List<vector>(nBodies_, vector::one);
+        for (direction d = 0; d < 3; ++d)
+        {
+            x[6*b + d] = Ub[b][d];
+            x[6*b + 3 + d] = omega[b][d]*Rg[b];
+        }
     }
-    List<vector>& thV = thetaV_;
-    List<vector>& thW = thetaW_;
+
+    // Anderson acceleration (type II, the last nHistory differences) of
+    // x <- x + f(x), f = -K0^-1 R: on this linear problem it is GMRES, so
+    // bodies that move each other through the liquid converge as surely
+    // as one body alone.  The error is estimated by the last update |dx|
+    // (the first, f itself, bounds it: the resistance K is at least the
+    // inertia K0), so a step takes two momentum solves at least
+    const label nHistory = 6;
+    DynamicList<scalarList> dX, dF;
     label iter = 0;
     scalar change = 0;
     for (iter = 1; iter <= maxIter; ++iter)
     {
+        forAll(Ub, b)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                Ub[b][d] = x[6*b + d];
+                omega[b][d] = x[6*b + 3 + d]/max(Rg[b], VSMALL);
+            }
+        }
         UR.primitiveFieldRef() = rigidField(Ub, omega);
         fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U) == rhs + Cp*UR);
         UEqnHeld.solve(solverDict);
 
         // The penalty's net force and torque on each body
-        const vectorField f(cp*(UR.primitiveField() - U.primitiveField())*V);
+        const vectorField fc
+        (
+            cp*(UR.primitiveField() - U.primitiveField())*V
+        );
         List<vector> F(nBodies_, Zero), T(nBodies_, Zero);
         forAll(body_, c)
         {
             const label b = body_[c];
             if (b < 0) continue;
-            F[b] += f[c];
-            T[b] += r_[c] ^ f[c];
+            F[b] += fc[c];
+            T[b] += r_[c] ^ fc[c];
         }
         bodyRegions::sumLists(F);
         bodyRegions::sumLists(T);
 
-        // Preconditioned residuals and the secant step per component:
-        // the penalty holds the body back, so the free body moves the
-        // other way, x <- x - theta K0^-1 R
-        const scalar Uscale = max(gMax(mag(U.primitiveField())), VSMALL);
-        change = 0;
+        // The preconditioned residual: the penalty holds the body back,
+        // so the free body moves the other way, -K0^-1 R
         forAll(Ub, b)
         {
             const vector zV(-F[b]/max(KV[b], VSMALL));
@@ -301,44 +348,95 @@ void Foam::rigidBodies::solve
             const vector Tb(-T[b]);
             vhe_body_omega(KJ[b].cdata(), Tb.cdata(), regions_.normal(),
                 zW.data());
-            for (direction d = 0; d < vector::nComponents; ++d)
+            for (direction d = 0; d < 3; ++d)
             {
-                if (iter > 1)
-                {
-                    const scalar dzV = zV[d] - zV0[b][d];
-                    const scalar dzW = zW[d] - zW0[b][d];
-                    if (mag(dzV) > VSMALL)
-                    {
-                        thV[b][d] = min(max
-                        (
-                            -(Ub[b][d] - xV0[b][d])/dzV, 1e-4), 1.0
-                        );
-                    }
-                    if (mag(dzW) > VSMALL)
-                    {
-                        thW[b][d] = min(max
-                        (
-                            -(omega[b][d] - xW0[b][d])/dzW, 1e-4), 1.0
-                        );
-                    }
-                }
-                xV0[b][d] = Ub[b][d];
-                xW0[b][d] = omega[b][d];
-                zV0[b][d] = zV[d];
-                zW0[b][d] = zW[d];
-                Ub[b][d] += thV[b][d]*zV[d];
-                omega[b][d] += thW[b][d]*zW[d];
-                const scalar tV = (fresh && iter == 1) ? 1 : thV[b][d];
-                const scalar tW = (fresh && iter == 1) ? 1 : thW[b][d];
-                change = max(change, mag(tV*zV[d]));
-                change = max(change, mag(tW*zW[d])*Rg[b]);
+                g[6*b + d] = zV[d]/dragV[b];
+                g[6*b + 3 + d] = zW[d]*Rg[b]/dragW[b];
             }
         }
+        const scalar Uscale = max(gMax(mag(U.primitiveField())), VSMALL);
+        f = g;
+        if (iter == 1)
+        {
+            change = 0;
+            forAll(f, i) change = max(change, mag(f[i]));
+            change /= Uscale;
+        }
+        if (change < tolerance || iter == maxIter) break;
+
+        if (iter > 1)
+        {
+            scalarList ddx(n), ddf(n);
+            forAll(ddx, i)
+            {
+                ddx[i] = x[i] - xPrev[i];
+                ddf[i] = f[i] - fPrev[i];
+            }
+            if (dX.size() == nHistory)
+            {
+                for (label k = 1; k < nHistory; ++k)
+                {
+                    dX[k - 1] = dX[k];
+                    dF[k - 1] = dF[k];
+                }
+                dX.resize(nHistory - 1);
+                dF.resize(nHistory - 1);
+            }
+            dX.append(ddx);
+            dF.append(ddf);
+        }
+        xPrev = x;
+        fPrev = f;
+
+        // gamma = argmin |f - dF gamma|: normal equations of the columns
+        // scaled to unit norm, regularised
+        const label m = dF.size();
+        scalarList gamma(m, Zero);
+        if (m > 0)
+        {
+            scalarList scale(m, Zero);
+            for (label k = 0; k < m; ++k)
+            {
+                forAll(f, i) scale[k] += sqr(dF[k][i]);
+                scale[k] = Foam::sqrt(scale[k]);
+            }
+            scalarSquareMatrix N(m, Zero);
+            scalarList rhsN(m, Zero);
+            for (label k = 0; k < m; ++k)
+            {
+                if (scale[k] <= VSMALL) { N(k, k) = 1; continue; }
+                for (label l = 0; l < m; ++l)
+                {
+                    if (scale[l] <= VSMALL) continue;
+                    forAll(f, i) N(k, l) += dF[k][i]*dF[l][i];
+                    N(k, l) /= scale[k]*scale[l];
+                }
+                forAll(f, i) rhsN[k] += dF[k][i]*f[i];
+                rhsN[k] /= scale[k];
+                N(k, k) += 1e-10;
+            }
+            gamma = rhsN;
+            Foam::solve(N, gamma);
+            for (label k = 0; k < m; ++k)
+            {
+                gamma[k] = scale[k] > VSMALL ? gamma[k]/scale[k] : 0;
+            }
+        }
+        change = 0;
+        forAll(x, i)
+        {
+            scalar dx = f[i];
+            for (label k = 0; k < m; ++k)
+            {
+                dx -= (dX[k][i] + dF[k][i])*gamma[k];
+            }
+            x[i] += dx;
+            change = max(change, mag(dx));
+        }
         change /= Uscale;
-        if (change < tolerance) break;
     }
     Info<< "Rigid bodies: " << nBodies_ << " held in "
-        << min(iter, maxIter) << " momentum solves, velocity error below "
+        << iter << " momentum solves, velocity error below "
         << change << " of |U|max" << endl;
 }
 
