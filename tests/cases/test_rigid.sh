@@ -1,12 +1,13 @@
 #!/bin/bash
-# Rigid bodies (solids { <name> { ...; rigid yes; } }): the velocity of each
-# body projected onto rigid motion every step (rigidBodies).
+# Rigid bodies (solids { <name> { ...; rigid yes; } }): each body held rigid
+# and free inside the momentum solve, projected onto rigid motion after the
+# pressure projection, its edge carried by its rigid flux (rigidBodies).
 #  - a neutrally buoyant rigid disk (r 0.1) at the centre of a plane
 #    Couette flow (walls at y = 0, 1 moving at -1 and +1 m/s, Re = 0.02 on
 #    the disk, 128 cells): it turns at half the flow's vorticity,
-#    omega_z = -1 rad/s, within 2 % over 0.25 <= t <= 0.5 (the bodies
-#    function object), stays where it is, keeps its volume (1e-6) and its
-#    shape (Taylor deformation below 0.02);
+#    omega_z = -1 rad/s, within 2.5 % over 0.25 <= t <= 0.5 (the bodies
+#    function object; measured 1.95 %), stays where it is, keeps its
+#    volume (1e-6) and its shape (Taylor deformation below 1e-3; 1.1e-4);
 #  - a rigid box (rho_s 500, 0.3 x 0.1) released at half its draft in water
 #    under air (the floatingBlock template at 40 x 40, as test_floating's
 #    elastic box): its mean draft over 2 <= t <= 3 is the Archimedes one,
@@ -51,7 +52,7 @@ read -r werr xerr verr dmax <<< "$(awk '!/^#/ && $1 >= 0.25 {
 check shearRotation "$werr < 0.025" "largest |omega_z/(-1 rad/s) - 1| $werr over 0.25 <= t <= 0.5"
 check shearStays "$xerr < 1e-6" "largest distance of the centroid from the centre $xerr m"
 check shearVolume "$verr < 1e-6" "largest volume drift $verr"
-check shearShape "$dmax < 0.02" "largest Taylor deformation $dmax"
+check shearShape "$dmax < 1e-3" "largest Taylor deformation $dmax"
 
 fl="$WORK/floating"
 sceneCase floatingBlock "$fl" nx=40 ny=40 depthOil=0 depthWater=0.5 shape=box \
@@ -61,7 +62,7 @@ sceneCase floatingBlock "$fl" nx=40 ny=40 depthOil=0 depthWater=0.5 shape=box \
 run "$fl" vheFoam || fail floatingRun "$fl/log.vheFoam"
 exact=$(python3 -c "print((500 - 1)/(1000 - 1)*0.1)")
 draft=$(python3 "$TESTS_DIR/floating.py" bodyDraft "$fl" 0.1 2)
-check floatingDraft "abs($draft - $exact) < 0.01*0.1" \
+check floatingDraft "abs($draft - $exact) < 0.005*0.1" \
     "draft $draft m, Archimedes $exact m (height 0.1 m)"
 drift=$(python3 "$TESTS_DIR/floating.py" volumes "$fl")
 check floatingVolumes "$drift < 1e-6" "largest relative phase volume drift $drift"
