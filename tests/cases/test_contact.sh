@@ -5,7 +5,7 @@
 # and surfaced:
 #  - with contact on (the default with a rigid material): the run ends,
 #    5 bodies at every write (colours), the smallest gap above a cell
-#    (measured 1.52 cells), the log reports bodies in contact;
+#    (measured 1.49 cells), the log reports bodies in contact;
 #  - with contact off the same bodies close in to below 0.6 of that gap
 #    (measured 0.76 cell: the liquid between them, held by both bodies'
 #    no-slip inside the momentum solve, drains slowly, but drains), so
