@@ -230,7 +230,9 @@ void Foam::rigidBodies::solve
     // (1 + cV nu dt/Rg^2) its inertia, of its rotation by (1 + cW nu
     // dt/Rg^2) (cV 2, cW 6: a disk's or a sphere's within a factor of 2);
     // the preconditioner K0 (1 + c nu dt/Rg^2) leaves the coupling
-    // between bodies to the acceleration
+    // between bodies to the acceleration.  nu is the mean over the body's
+    // cells (its material's and its edge's): an estimate, as the
+    // preconditioner needs
     scalarList dragV(nBodies_, Zero), dragW(nBodies_, Zero);
     {
         const scalarField& mu = mixture_.mu().primitiveField();
@@ -269,8 +271,7 @@ void Foam::rigidBodies::solve
     // The penalty raises the matrix's residual normalisation by up to P,
     // and the body's net force is P times the held cells' small velocity
     // error: U's tolerance divided by P (and no relTol), else the force
-    // is the solver's noise (the fixed point stalled at 1e-3 to 5e-2 of
-    // |U|max with 38 touching disks)
+    // carries the solver's error times P
     dictionary solverDict
     (
         mesh.solverDict
