@@ -3,7 +3,8 @@
 # tutorials/floatingBodies (five rigid bodies of rho 600 released under
 # water, 80 x 80 cells) to t = 1.5, when they have risen into each other
 # and surfaced:
-#  - with contact on (the default with a rigid material): the run ends,
+#  - with contact { strength 0.5; } (the tutorial's; off by default):
+#    the run ends,
 #    5 bodies at every write (colours), the smallest gap above a cell
 #    (measured 1.49 cells), the log reports bodies in contact;
 #  - with contact off the same bodies close in to below 0.6 of that gap
