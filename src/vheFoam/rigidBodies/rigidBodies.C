@@ -113,16 +113,36 @@ void Foam::rigidBodies::update()
 
     r_.setSize(nCells);
     r_ = Zero;
-    J_.setSize(nBodies_);
-    J_ = Zero;
     forAll(body_, c)
     {
         const label b = body_[c];
         if (b < 0) continue;
         r_[c] = regions_.nearestImage(C[c] - X0[b]) - Rm[b]/max(M_[b], VSMALL);
-        J_[b] += rho[c]*w_[c]*V[c]*sqr(r_[c]);
     }
-    bodyRegions::sumLists(J_);
+    moments(rho, M_, J_);
+}
+
+
+void Foam::rigidBodies::moments
+(
+    const scalarField& k,
+    scalarList& S0,
+    List<symmTensor>& S2
+) const
+{
+    const scalarField& V = mixture_.rho().mesh().V();
+    S0 = scalarList(nBodies_, Zero);
+    S2 = List<symmTensor>(nBodies_, Zero);
+    forAll(body_, c)
+    {
+        const label b = body_[c];
+        if (b < 0) continue;
+        const scalar m = k[c]*w_[c]*V[c];
+        S0[b] += m;
+        S2[b] += m*sqr(r_[c]);
+    }
+    bodyRegions::sumLists(S0);
+    bodyRegions::sumLists(S2);
 }
 
 
@@ -207,19 +227,9 @@ void Foam::rigidBodies::solve
 
     // Each body's inertia over the step K0 (the time derivative's share
     // of A), in translation and rotation: the preconditioner's base
-    const volScalarField Ai(fvm::ddt(mixture_.rho(), U)().A());
-    scalarList KV(nBodies_, Zero);
-    List<symmTensor> KJ(nBodies_, Zero);
-    forAll(body_, c)
-    {
-        const label b = body_[c];
-        if (b < 0) continue;
-        const scalar k = Ai[c]*w_[c]*V[c];
-        KV[b] += k;
-        KJ[b] += k*sqr(r_[c]);
-    }
-    bodyRegions::sumLists(KV);
-    bodyRegions::sumLists(KJ);
+    scalarList KV;
+    List<symmTensor> KJ;
+    moments(fvm::ddt(mixture_.rho(), U)().A(), KV, KJ);
     // Radius of gyration: a rotation's velocity scale
     scalarList Rg(nBodies_);
     forAll(Rg, b) Rg[b] = Foam::sqrt(tr(J_[b])/max(M_[b], VSMALL));
@@ -290,7 +300,7 @@ void Foam::rigidBodies::solve
 
     // The unknowns in velocity units, 6 per body: U_b and Rg omega
     const label n = 6*nBodies_;
-    scalarList x(n), g(n, Zero), f(n, Zero), xPrev(n), fPrev(n);
+    scalarList x(n), f(n, Zero), xPrev(n), fPrev(n);
     forAll(Ub, b)
     {
         for (direction d = 0; d < 3; ++d)
@@ -301,11 +311,10 @@ void Foam::rigidBodies::solve
     }
 
     // Anderson acceleration (type II, the last nHistory differences) of
-    // x <- x + f(x), f = -K0^-1 R: on this linear problem it is GMRES, so
-    // bodies that move each other through the liquid converge as surely
-    // as one body alone.  The error is estimated by the last update |dx|
-    // (the first, f itself, bounds it: the resistance K is at least the
-    // inertia K0), so a step takes two momentum solves at least
+    // x <- x + f(x), f = -K^-1 R with K the resistance estimated above: on
+    // this linear problem it is GMRES, so bodies that move each other
+    // through the liquid converge as surely as one body alone.  The error
+    // is estimated by the last update |dx|, on the first iterate by f
     const label nHistory = 6;
     DynamicList<scalarList> dX, dF;
     label iter = 0;
@@ -341,7 +350,7 @@ void Foam::rigidBodies::solve
         bodyRegions::sumLists(T);
 
         // The preconditioned residual: the penalty holds the body back,
-        // so the free body moves the other way, -K0^-1 R
+        // so the free body moves the other way, -K^-1 R
         forAll(Ub, b)
         {
             const vector zV(-F[b]/max(KV[b], VSMALL));
@@ -351,12 +360,11 @@ void Foam::rigidBodies::solve
                 zW.data());
             for (direction d = 0; d < 3; ++d)
             {
-                g[6*b + d] = zV[d]/dragV[b];
-                g[6*b + 3 + d] = zW[d]*Rg[b]/dragW[b];
+                f[6*b + d] = zV[d]/dragV[b];
+                f[6*b + 3 + d] = zW[d]*Rg[b]/dragW[b];
             }
         }
         const scalar Uscale = max(gMax(mag(U.primitiveField())), VSMALL);
-        f = g;
         if (iter == 1)
         {
             change = 0;
