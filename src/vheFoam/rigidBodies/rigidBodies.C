@@ -73,6 +73,7 @@ void Foam::rigidBodies::update()
     // bodies reach belongs to one only, so that each body's sums and its
     // projection see the same cells and its momentum is kept exactly)
     DynamicList<vector> X0;
+    DynamicList<bool> fixed;
     nBodies_ = 0;
     for (const label i : materials_)
     {
@@ -93,8 +94,13 @@ void Foam::rigidBodies::update()
             }
         }
         X0.append(regions_.centroid());
+        for (label b = 0; b < regions_.size(); ++b)
+        {
+            fixed.append(mixture_.phases()[i].fixed);
+        }
         nBodies_ += regions_.size();
     }
+    fixed_.transfer(fixed);
 
     // Mass and centre of mass (relative to the region's centroid)
     M_.setSize(nBodies_);
@@ -179,6 +185,23 @@ void Foam::rigidBodies::rigidMotion
         (
             J_[b].cdata(), L[b].cdata(), regions_.normal(), omega[b].data()
         );
+    }
+}
+
+
+void Foam::rigidBodies::holdFixed
+(
+    List<vector>& Ub,
+    List<vector>& omega
+) const
+{
+    forAll(fixed_, b)
+    {
+        if (fixed_[b])
+        {
+            Ub[b] = Zero;
+            omega[b] = Zero;
+        }
     }
 }
 
@@ -270,6 +293,7 @@ void Foam::rigidBodies::solve
     // Start from the last projection's rigid motion
     List<vector> Ub, omega;
     rigidMotion(U.primitiveField(), Ub, omega);
+    holdFixed(Ub, omega);
 
     volVectorField UR
     (
@@ -358,10 +382,11 @@ void Foam::rigidBodies::solve
             const vector Tb(-T[b]);
             vhe_body_omega(KJ[b].cdata(), Tb.cdata(), regions_.normal(),
                 zW.data());
+            const scalar free = fixed_[b] ? 0 : 1;
             for (direction d = 0; d < 3; ++d)
             {
-                f[6*b + d] = zV[d]/dragV[b];
-                f[6*b + 3 + d] = zW[d]*Rg[b]/dragW[b];
+                f[6*b + d] = free*zV[d]/dragV[b];
+                f[6*b + 3 + d] = free*zW[d]*Rg[b]/dragW[b];
             }
         }
         const scalar Uscale = max(gMax(mag(U.primitiveField())), VSMALL);
@@ -458,6 +483,7 @@ void Foam::rigidBodies::correct(volVectorField& U)
     List<vector>& Ub = Ub_;
     List<vector>& omega = omega_;
     rigidMotion(u, Ub, omega);
+    holdFixed(Ub, omega);
     forAll(body_, c)
     {
         const label b = body_[c];

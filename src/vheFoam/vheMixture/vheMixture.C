@@ -14,7 +14,7 @@
 void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
 {
     const wordList allowed =
-        solid ? wordList({"rho", "mu", "nu", "G", "rigid", "colours"})
+        solid ? wordList({"rho", "mu", "nu", "G", "rigid", "motion", "colours"})
               : wordList({"rho", "mu", "nu"});
 
     for (const entry& e : dict)
@@ -90,6 +90,24 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
                 << ": remove it, or set rigid no" << exit(FatalIOError);
         }
 
+        // A rigid material's bodies move freely (motion free) or are held
+        // in place (motion fixed: obstacles, a fixed bed, an array of
+        // cylinders); a fixed body's fraction is its initial one for good
+        const word motion =
+            solid ? pd.getOrDefault<word>("motion", "free") : word("free");
+        if (motion != "free" && motion != "fixed")
+        {
+            FatalIOErrorInFunction(pd)
+                << "motion of " << name << " must be free or fixed, got "
+                << motion << exit(FatalIOError);
+        }
+        if (motion == "fixed" && !rigid)
+        {
+            FatalIOErrorInFunction(pd)
+                << "motion fixed holds a rigid body in place: set rigid yes"
+                << " for " << name << exit(FatalIOError);
+        }
+
         scalar G = 0;
         if (solid && !rigid)
         {
@@ -151,6 +169,7 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
             p.colour = k;
             p.solid = solid;
             p.rigid = rigid;
+            p.fixed = motion == "fixed";
             p.rho = rho.value();
             p.mu = hasMu ? visc : visc*rho.value();
             p.G = G;
@@ -368,7 +387,8 @@ Foam::vheMixture::vheMixture
     for (const phase& p : phases_)
     {
         Info<< ' ' << p.name
-            << (p.rigid ? " (rigid solid" : p.solid ? " (solid" : " (fluid")
+            << (p.fixed ? " (fixed rigid solid"
+              : p.rigid ? " (rigid solid" : p.solid ? " (solid" : " (fluid")
             << ", rho " << p.rho << ", mu " << p.mu;
         if (p.solid && !p.rigid) Info<< ", G " << p.G;
         Info<< ')';
@@ -382,6 +402,27 @@ Foam::vheMixture::vheMixture
 
     readAlphas();
     checkAlphas();
+    fixedAlphas_.setSize(alphas_.size());
+    forAll(phases_, i)
+    {
+        if (phases_[i].fixed && alphas_.size() > 1)
+        {
+            fixedAlphas_.set
+            (
+                i,
+                new volScalarField
+                (
+                    IOobject
+                    (
+                        alphas_[i].name() + ".fixed",
+                        mesh_.time().timeName(), mesh_,
+                        IOobject::NO_READ, IOobject::NO_WRITE
+                    ),
+                    alphas_[i]
+                )
+            );
+        }
+    }
     if (alphas_.size() > 1)
     {
         checkSchemes();

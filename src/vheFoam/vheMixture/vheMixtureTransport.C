@@ -440,8 +440,50 @@ void Foam::vheMixture::solve()
         rhoPhi_ = rhoPhiSum;
     }
 
+    holdFixed();
     correct();
     report();
+}
+
+
+void Foam::vheMixture::holdFixed()
+{
+    // A fixed body's velocity is held at zero in its cells of weight 1 and
+    // its inner faces carry no flux (rigidBodies), but its diffuse edge
+    // (fractions below 1/4) moves with the liquid in part, and over a long
+    // run of a flow past it the transport would draw its edge out
+    // downstream.  Its fraction is its shape, given: it is put back, and
+    // the fluids of its cells share the rest in their proportions.  The
+    // fluids' volume changes by what the transport moved across the edge
+    // (benchmarks/rigid reports it)
+    label firstFluid = 0;
+    while (phases_[firstFluid].solid) ++firstFluid;
+    forAll(fixedAlphas_, i)
+    {
+        if (!fixedAlphas_.set(i)) continue;
+        scalarField& a = alphas_[i].primitiveFieldRef();
+        const scalarField& a0 = fixedAlphas_[i].primitiveField();
+        scalarField rest(a.size(), 0);
+        forAll(alphas_, j)
+        {
+            if (j != i) rest += alphas_[j].primitiveField();
+        }
+        forAll(alphas_, j)
+        {
+            if (j == i) continue;
+            scalarField& aj = alphas_[j].primitiveFieldRef();
+            forAll(aj, c)
+            {
+                if (a[c] == a0[c]) continue;
+                aj[c] = rest[c] > SMALL
+                  ? aj[c]*(1 - a0[c])/rest[c]
+                  : (j == firstFluid ? 1 - a0[c] : 0);
+            }
+            alphas_[j].correctBoundaryConditions();
+        }
+        a = a0;
+        alphas_[i].correctBoundaryConditions();
+    }
 }
 
 
