@@ -242,17 +242,20 @@ void Foam::rigidBodies::solve
         dimensionedScalar(A.dimensions(), Zero)
     );
     scalarField& cp = Cp.primitiveFieldRef();
+    const scalarField Addt(fvm::ddt(mixture_.rho(), U)().A());
     forAll(body_, c)
     {
         if (body_[c] < 0) continue;
-        cp[c] = A[c]*(w_[c] < 1 ? min(penalty, w_[c]/(1 - w_[c])) : penalty);
+        cp[c] = w_[c] < 1
+          ? min(penalty*A[c], (A[c] - Addt[c])*w_[c]/(1 - w_[c]))
+          : penalty*A[c];
     }
 
     // Each body's inertia over the step K0 (the time derivative's share
     // of A), in translation and rotation: the preconditioner's base
     scalarList KV;
     List<symmTensor> KJ;
-    moments(fvm::ddt(mixture_.rho(), U)().A(), KV, KJ);
+    moments(Addt, KV, KJ);
     // Radius of gyration: a rotation's velocity scale
     scalarList Rg(nBodies_);
     forAll(Rg, b) Rg[b] = Foam::sqrt(tr(J_[b])/max(M_[b], VSMALL));
@@ -340,7 +343,13 @@ void Foam::rigidBodies::solve
     // through the liquid converge as surely as one body alone.  The error
     // is estimated by the last update |dx|, on the first iterate by f
     const label nHistory = 6;
-    DynamicList<scalarList> dX, dF;
+    DynamicList<scalarList>& dX = dX_;
+    DynamicList<scalarList>& dF = dF_;
+    if (dX.size() && dX[0].size() != n)
+    {
+        dX.clear();
+        dF.clear();
+    }
     label iter = 0;
     scalar change = 0;
     for (iter = 1; iter <= maxIter; ++iter)
