@@ -235,13 +235,17 @@ void Foam::rigidBodies::solve
 
     // The penalty: a cell of weight w takes w U_R + (1 - w) U_free
     const volScalarField A(UEqn.A());
-    volScalarField Cp
+    penalty_.reset
     (
-        IOobject("rigidPenalty", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedScalar(A.dimensions(), Zero)
+        new volScalarField
+        (
+            IOobject("rigidPenalty", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedScalar(A.dimensions(), Zero)
+        )
     );
-    scalarField& cp = Cp.primitiveFieldRef();
+    const volScalarField& Cp = *penalty_;
+    scalarField& cp = penalty_->primitiveFieldRef();
     const scalarField Addt(fvm::ddt(mixture_.rho(), U)().A());
     forAll(body_, c)
     {
