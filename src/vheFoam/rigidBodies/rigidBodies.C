@@ -12,6 +12,8 @@
 #include "fvcSup.H"
 #include "fvmDdt.H"
 #include "scalarMatrices.H"
+#include "uniformDimensionedFields.H"
+#include "OSspecific.H"
 
 namespace
 {
@@ -66,6 +68,8 @@ void Foam::rigidBodies::update()
     body_ = -1;
     w_.setSize(nCells);
     w_ = 0;
+    rhoAlpha_.setSize(nCells);
+    rhoAlpha_ = 0;
     reached_.setSize(nCells);
     reached_ = 0;
 
@@ -91,6 +95,7 @@ void Foam::rigidBodies::update()
             {
                 w_[c] = wc;
                 body_[c] = nBodies_ + lab[c];
+                rhoAlpha_[c] = mixture_.phases()[i].rho*a[c];
             }
         }
         X0.append(regions_.centroid());
@@ -185,6 +190,73 @@ void Foam::rigidBodies::rigidMotion
         (
             J_[b].cdata(), L[b].cdata(), regions_.normal(), omega[b].data()
         );
+    }
+}
+
+
+void Foam::rigidBodies::writeForces
+(
+    const List<vector>& Fc,
+    const List<vector>& Tc
+)
+{
+    // The fluid's force on a fixed body: what holds it, less the body
+    // force on its own mass (gravity and bodyForce on sum rho_s alpha V,
+    // the solid's mass: the rest of its edge cells is fluid): the drag
+    // and lift of an obstacle, about its centre of mass.  (In a steady
+    // flow driven by a body force f, the forces on the fixed bodies sum
+    // to f times the fluid's mass exactly)
+    bool anyFixed = false;
+    forAll(fixed_, b) anyFixed = anyFixed || fixed_[b];
+    if (!anyFixed) return;
+
+    const fvMesh& mesh = mixture_.rho().mesh();
+    // g is registered with the mesh or (v1912's gravity) with the time
+    vector gb(mixture_.bodyForce().value());
+    for (const objectRegistry* db : {&mesh.thisDb(), &mesh.time().db()})
+    {
+        if (db->foundObject<uniformDimensionedVectorField>("g"))
+        {
+            gb += db->lookupObject<uniformDimensionedVectorField>("g").value();
+            break;
+        }
+    }
+
+    if (Pstream::master() && !forceFile_.valid())
+    {
+        const fileName dir
+        (
+            mesh.time().globalPath()/"postProcessing"/"fixedBodies"
+           /mesh.time().timeName(mesh.time().startTime().value())
+        );
+        mkDir(dir);
+        forceFile_.reset(new OFstream(dir/"forces.dat"));
+        forceFile_()
+            << "# The fluid's force and torque (about the centre of mass)"
+            << " on each fixed rigid body [N, N m]" << nl
+            << "# time body Fx Fy Fz Tx Ty Tz" << endl;
+    }
+    scalarList Ms(nBodies_, Zero);
+    const scalarField& V = mesh.V();
+    forAll(body_, c)
+    {
+        if (body_[c] >= 0) Ms[body_[c]] += rhoAlpha_[c]*V[c];
+    }
+    bodyRegions::sumLists(Ms);
+    if (Pstream::master())
+    {
+        OFstream& os = forceFile_();
+        os.precision(10);
+        forAll(fixed_, b)
+        {
+            if (!fixed_[b]) continue;
+            const vector F(-Fc[b] - Ms[b]*gb);
+            const vector T(-Tc[b]);
+            os  << mesh.time().value() << ' ' << b << ' '
+                << F.x() << ' ' << F.y() << ' ' << F.z() << ' '
+                << T.x() << ' ' << T.y() << ' ' << T.z() << nl;
+        }
+        os.flush();
     }
 }
 
@@ -375,7 +447,10 @@ void Foam::rigidBodies::solve
         (
             cp*(UR.primitiveField() - U.primitiveField())*V
         );
-        List<vector> F(nBodies_, Zero), T(nBodies_, Zero);
+        List<vector>& F = Fpen_;
+        List<vector>& T = Tpen_;
+        F = List<vector>(nBodies_, Zero);
+        T = List<vector>(nBodies_, Zero);
         forAll(body_, c)
         {
             const label b = body_[c];
@@ -497,12 +572,34 @@ void Foam::rigidBodies::correct(volVectorField& U)
     List<vector>& omega = omega_;
     rigidMotion(u, Ub, omega);
     holdFixed(Ub, omega);
+    // The force that holds each body: the penalty's in the held solve and
+    // the momentum this projection takes from its cells
+    const scalarField& rho = mixture_.rho().primitiveField();
+    const scalarField& V = mesh.V();
+    const scalar dt = mesh.time().deltaTValue();
+    List<vector> Fc(nBodies_, Zero), Tc(nBodies_, Zero);
     forAll(body_, c)
     {
         const label b = body_[c];
-        if (b >= 0) u[c] += w_[c]*(Ub[b] + (omega[b] ^ r_[c]) - u[c]);
+        if (b < 0) continue;
+        const vector du(w_[c]*(Ub[b] + (omega[b] ^ r_[c]) - u[c]));
+        const vector f(rho[c]*V[c]*du/dt);
+        Fc[b] += f;
+        Tc[b] += r_[c] ^ f;
+        u[c] += du;
     }
     U.correctBoundaryConditions();
+    bodyRegions::sumLists(Fc);
+    bodyRegions::sumLists(Tc);
+    if (Fpen_.size() == nBodies_)
+    {
+        forAll(Fc, b)
+        {
+            Fc[b] += Fpen_[b];
+            Tc[b] += Tpen_[b];
+        }
+    }
+    writeForces(Fc, Tc);
 
     // A cell moves wholly with a body where its weight is 1/10 or more
     // (a fraction of 1/40) and no other body reaches it: the faces between
