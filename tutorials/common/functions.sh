@@ -98,8 +98,17 @@ vhe_pvbatch()
 {
     local log=$1 script=$2 foam=$3; shift 3
     touch "$foam"
-    xvfb-run -a pvbatch "$script" "$foam" "$@" > "$log" 2>&1 \
-        || { echo "pvbatch failed: $log" >&2; return 1; }
+    # xvfb-run -a can pick a display whose last server is still going
+    # away ("bad X server connection", seen in one of nine renders in a
+    # row): a failed render is tried again, up to three times
+    local try
+    for try in 1 2 3; do
+        xvfb-run -a pvbatch "$script" "$foam" "$@" > "$log" 2>&1 && return 0
+        grep -q "bad X server connection" "$log" || break
+        sleep 2
+    done
+    echo "pvbatch failed: $log" >&2
+    return 1
 }
 
 # vhe_volume_drift DAT OUT: V(t)/V(0) - 1 for every column of a

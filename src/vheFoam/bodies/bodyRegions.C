@@ -81,6 +81,69 @@ Foam::bodyRegions::bodyRegions(const fvMesh& mesh, const scalar threshold)
 }
 
 
+void Foam::bodyRegions::moments
+(
+    const labelList& body,
+    const List<vector>& X0,
+    const scalarField& m,
+    scalarList& M,
+    List<vector>& X,
+    vectorField& r,
+    List<symmTensor>& J
+) const
+{
+    const vectorField& C = mesh_.C().primitiveField();
+    const label nB = X0.size();
+    M = scalarList(nB, Zero);
+    List<vector> Mx(nB, Zero);
+    forAll(body, c)
+    {
+        const label b = body[c];
+        if (b < 0) continue;
+        M[b] += m[c];
+        Mx[b] += m[c]*nearestImage(C[c] - X0[b]);
+    }
+    sumLists(M);
+    sumLists(Mx);
+    X.setSize(nB);
+    forAll(X, b) X[b] = X0[b] + Mx[b]/max(M[b], VSMALL);
+
+    r.setSize(body.size());
+    r = Zero;
+    forAll(body, c)
+    {
+        const label b = body[c];
+        if (b >= 0) r[c] = nearestImage(C[c] - X[b]);
+    }
+    scalarList S0;
+    sums(body, nB, m, r, S0, J);
+}
+
+
+void Foam::bodyRegions::sums
+(
+    const labelList& body,
+    const label nBodies,
+    const scalarField& m,
+    const vectorField& r,
+    scalarList& S0,
+    List<symmTensor>& S2
+)
+{
+    S0 = scalarList(nBodies, Zero);
+    S2 = List<symmTensor>(nBodies, Zero);
+    forAll(body, c)
+    {
+        const label b = body[c];
+        if (b < 0) continue;
+        S0[b] += m[c];
+        S2[b] += m[c]*sqr(r[c]);
+    }
+    sumLists(S0);
+    sumLists(S2);
+}
+
+
 Foam::vector Foam::bodyRegions::nearestImage(const vector& d) const
 {
     vector r(d);

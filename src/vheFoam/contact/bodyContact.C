@@ -230,7 +230,6 @@ void Foam::bodyContact::correct()
     // grad(psi_q) (its scale is set per body below)
     const scalarField& rho = mixture_.rho().primitiveField();
     const scalarField coef(rho.size(), 1.0);
-    const vectorField& C = mesh.C().primitiveField();
     const scalarField& V = mesh.V().field();
 
     label nTouching = 0;
@@ -279,40 +278,31 @@ void Foam::bodyContact::correct()
         const scalar minVolume = regions_.minBodyVolume();
         const scalarList& vol = regions_.volume();
         const List<vector>& X0 = regions_.centroid();
-        scalarList M(nB, Zero), H(nB, Zero), D(nB, Zero);
-        List<vector> F(nB, Zero), Rm(nB, Zero);
+        // Mass, centre of mass, positions and second moment of the core
+        // (bodyRegions), and the sums of contact's own
+        scalarList M;
+        List<vector> Xm;
+        vectorField r;
+        List<symmTensor> J;
+        scalarField m(a.size());
+        forAll(m, c) m[c] = rho[c]*core(a[c])*V[c];
+        regions_.moments(lab, X0, m, M, Xm, r, J);
+        scalarList H(nB, Zero), D(nB, Zero);
+        List<vector> F(nB, Zero), T(nB, Zero);
         forAll(lab, c)
         {
             const label b = lab[c];
             if (b < 0) continue;
-            const scalar m = rho[c]*core(a[c])*V[c];
-            M[b] += m;
-            H[b] += m*h_[c];
+            H[b] += m[c]*h_[c];
             D[b] = max(D[b], depth[c]);
             F[b] += g[c]*V[c];
-            Rm[b] += m*regions_.nearestImage(C[c] - X0[b]);
+            T[b] += r[c] ^ (g[c]*V[c]);
         }
-        bodyRegions::sumLists(M);
         bodyRegions::sumLists(H);
         bodyRegions::sumLists(F);
-        bodyRegions::sumLists(Rm);
+        bodyRegions::sumLists(T);
         Pstream::listCombineGather(D, maxEqOp<scalar>());
         Pstream::listCombineScatter(D);
-        List<vector> Xm(nB);
-        forAll(Xm, b) Xm[b] = Rm[b]/max(M[b], VSMALL);
-
-        List<symmTensor> J(nB, Zero);
-        List<vector> T(nB, Zero);
-        forAll(lab, c)
-        {
-            const label b = lab[c];
-            if (b < 0) continue;
-            const vector r(regions_.nearestImage(C[c] - X0[b]) - Xm[b]);
-            J[b] += rho[c]*core(a[c])*V[c]*sqr(r);
-            T[b] += r ^ (g[c]*V[c]);
-        }
-        bodyRegions::sumLists(J);
-        bodyRegions::sumLists(T);
         // The body's acceleration: strength depth h/dtRef^2 along F, and the
         // angular acceleration of the torque scaled alike
         List<vector> acc(nB, Zero), dOmega(nB, Zero);
@@ -335,8 +325,7 @@ void Foam::bodyContact::correct()
         {
             const label b = lab[c];
             if (b < 0) continue;
-            const vector r(regions_.nearestImage(C[c] - X0[b]) - Xm[b]);
-            fc[c] += rho[c]*core(a[c])*(acc[b] + (dOmega[b] ^ r));
+            fc[c] += rho[c]*core(a[c])*(acc[b] + (dOmega[b] ^ r[c]));
         }
     }
     if (!nTouching)

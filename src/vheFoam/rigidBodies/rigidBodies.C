@@ -59,7 +59,6 @@ Foam::rigidBodies::rigidBodies(const vheMixture& mixture)
 void Foam::rigidBodies::update()
 {
     const fvMesh& mesh = mixture_.rho().mesh();
-    const vectorField& C = mesh.C().primitiveField();
     const scalarField& V = mesh.V();
     const scalarField& rho = mixture_.rho().primitiveField();
     const label nCells = mesh.nCells();
@@ -107,30 +106,9 @@ void Foam::rigidBodies::update()
     }
     fixed_.transfer(fixed);
 
-    // Mass and centre of mass (relative to the region's centroid)
-    M_.setSize(nBodies_);
-    M_ = Zero;
-    List<vector> Rm(nBodies_, Zero);
-    forAll(body_, c)
-    {
-        const label b = body_[c];
-        if (b < 0) continue;
-        const scalar m = rho[c]*w_[c]*V[c];
-        M_[b] += m;
-        Rm[b] += m*regions_.nearestImage(C[c] - X0[b]);
-    }
-    bodyRegions::sumLists(M_);
-    bodyRegions::sumLists(Rm);
-
-    r_.setSize(nCells);
-    r_ = Zero;
-    forAll(body_, c)
-    {
-        const label b = body_[c];
-        if (b < 0) continue;
-        r_[c] = regions_.nearestImage(C[c] - X0[b]) - Rm[b]/max(M_[b], VSMALL);
-    }
-    moments(rho, M_, J_);
+    // Mass, centre of mass, positions and second moment (bodyRegions)
+    List<vector> Xm;
+    regions_.moments(body_, X0, rho*w_*V, M_, Xm, r_, J_);
 }
 
 
@@ -141,19 +119,10 @@ void Foam::rigidBodies::moments
     List<symmTensor>& S2
 ) const
 {
-    const scalarField& V = mixture_.rho().mesh().V();
-    S0 = scalarList(nBodies_, Zero);
-    S2 = List<symmTensor>(nBodies_, Zero);
-    forAll(body_, c)
-    {
-        const label b = body_[c];
-        if (b < 0) continue;
-        const scalar m = k[c]*w_[c]*V[c];
-        S0[b] += m;
-        S2[b] += m*sqr(r_[c]);
-    }
-    bodyRegions::sumLists(S0);
-    bodyRegions::sumLists(S2);
+    bodyRegions::sums
+    (
+        body_, nBodies_, k*w_*mixture_.rho().mesh().V(), r_, S0, S2
+    );
 }
 
 

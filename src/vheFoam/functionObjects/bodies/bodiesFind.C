@@ -22,7 +22,6 @@ void Foam::functionObjects::bodies::findBodies
     regions_.find(a);
     const label nB = regions_.size();
     const labelList& lab = regions_.cellBody();
-    const vectorField& C = mesh_.C().primitiveField();
     const scalarField& V = mesh_.V();
     const vectorField& U = lookupObject<volVectorField>("U").primitiveField();
 
@@ -52,8 +51,13 @@ void Foam::functionObjects::bodies::findBodies
         found.append(bd);
     }
 
-    // Second moments, angular momentum, |dev B|
-    List<symmTensor> J(nB, Zero);
+    // Second moments (bodyRegions, volume weighted: about the centroid),
+    // angular momentum, |dev B|
+    scalarList Vb;
+    List<vector> Xb;
+    vectorField r;
+    List<symmTensor> J;
+    regions_.moments(lab, regions_.centroid(), a*V, Vb, Xb, r, J);
     List<vector> L(nB, Zero);
     scalarList devMax(nB, Zero);
     scalarField devB(a.size(), Zero);
@@ -72,13 +76,9 @@ void Foam::functionObjects::bodies::findBodies
         const label b = lab[c];
         if (b < 0) continue;
         const body& bd = found[base + b];
-        const scalar w = a[c]*V[c];
-        const vector r(regions_.nearestImage(C[c] - bd.centroid));
-        J[b] += w*sqr(r);
-        L[b] += w*(r ^ (U[c] - bd.U));
+        L[b] += a[c]*V[c]*(r[c] ^ (U[c] - bd.U));
         if (a[c] > regions_.threshold()) devMax[b] = max(devMax[b], devB[c]);
     }
-    bodyRegions::sumLists(J);
     bodyRegions::sumLists(L);
     Pstream::listCombineGather(devMax, maxEqOp<scalar>());
     Pstream::listCombineScatter(devMax);
