@@ -274,7 +274,10 @@ void Foam::rigidBodies::solve
     const fvMesh& mesh = U.mesh();
     const scalarField& V = mesh.V();
 
-    // The penalty: a cell of weight w takes w U_R + (1 - w) U_free
+    // The penalty: a cell of weight w takes w U_R + (1 - w) U_free, U_free
+    // its steady velocity without the penalty (the edge's C leaves out
+    // the time derivative's rho/dt, else the blend compounds step after
+    // step at small dt); a cell of weight 1 is held at P times A
     const volScalarField A(UEqn.A());
     penalty_.reset
     (
