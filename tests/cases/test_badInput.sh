@@ -66,6 +66,10 @@ d=$(variant hugeG); setEntry "$d/$P" solids/rubber/G "[1 -1 -2 0 0 0 0] 1e300"
 expectFatal hugeG "$d" vheFoam "G of rubber is 1e\+300 Pa, above 1e\+20 Pa" vheProperties
 d=$(variant rigidWithG); foamDictionary -entry solids/rubber/rigid -add yes "$d/$P" > /dev/null
 expectFatal rigidWithG "$d" vheFoam "G has no meaning for the rigid material rubber" vheProperties
+d=$(variant fixedNotRigid); foamDictionary -entry solids/rubber/motion -add fixed "$d/$P" > /dev/null
+expectFatal fixedNotRigid "$d" vheFoam "motion fixed holds a rigid body in place: set rigid yes for rubber" vheProperties
+d=$(variant unknownMotion); foamDictionary -entry solids/rubber/motion -add spinning "$d/$P" > /dev/null
+expectFatal unknownMotion "$d" vheFoam "motion of rubber must be free or fixed, got spinning" vheProperties
 d=$(variant contactRange); echo "contact { range 3; }" >> "$d/$P"
 expectFatal contactRange "$d" vheFoam "contact \{ range \} must lie in \[1, 2\] cells" vheProperties
 d=$(variant contactStrength); echo "contact { strength -1; }" >> "$d/$P"
