@@ -10,8 +10,15 @@ import re, sys
 d = sys.argv[1]
 n = int(re.search(r'\((\d+) (\d+) 1\)', open(d + '/system/blockMeshDict').read()).group(1)) // 22
 depth = 0.1/n
-rows = [l.split() for l in open(d + '/postProcessing/fixedBodies/0/forces.dat')
-        if not l.startswith('#')]
+# every start time's file (a restarted run writes one more), in order
+import glob, os
+rows = []
+for f in sorted(glob.glob(d + '/postProcessing/fixedBodies/*/forces.dat'),
+                key=lambda f: float(os.path.basename(os.path.dirname(f)))):
+    new = [l.split() for l in open(f) if not l.startswith('#')]
+    if rows and new:
+        rows = [r for r in rows if float(r[0]) < float(new[0][0])]
+    rows += new
 t = [float(r[0]) for r in rows]
 k = 2/(1.0*1.0**2*0.1*depth)
 cd = [k*float(r[2]) for r in rows]
