@@ -134,11 +134,7 @@ read -r wmin wmax ids <<< "$(counts "$sc/$dat")"
 d=$(drift "$sc/$dat")
 nt=$(grep -c "bodies in contact" "$sc/log.vheFoam")
 gc=$(awk '!/^#/ && $NF >= 0 && (g == "" || $NF < g) {g = $NF} END {print g}' "$sc/$dat")
-# (Contact is not what keeps these soft disks apart: without it they keep
-# 1.16 cells, with it 1.12.  Before the projection's Rhie-Chow damping took
-# rho/A this check asked for contact to widen the gap, and it did.)  With
-# contact on, they stay two bodies at least half a cell apart, and it acts
-check sedimentContact "$wmin == 2 and $wmax == 2 and $d < 1e-6 and $nt > 0 and $gc > 0.5/64" \
+check sedimentContact "$wmin == 2 and $wmax == 2 and $d < 1e-6 and $nt > 0 and $gc > $gmin" \
     "with contact { strength 0.5; }: bodies per write $wmin..$wmax, volume drift $d, $nt steps in contact, smallest gap $gc m (without contact $gmin m)"
 
 one="$WORK/sedimentOneColour"

@@ -4,9 +4,9 @@
 # force, against Sangani & Acrivos (1982): F/(mu U) = 51.53 at area
 # fraction 0.2 (benchmarks/rigid/squareArray.sh, F = f rho L^2, U the
 # mean velocity over the cell).  The convergence study (benchmarks/rigid:
-# 16, 32, 64, 128 cells: -7.2 %, -1.15 %, +0.65 %, +0.52 %; within 1 %
-# from 64 cells at every area fraction 0.05 to 0.3) sets the bounds:
-# within 2 % at 32 cells, within 1 % and closer at 64.  The cylinder's
+# 16, 32, 64, 128 cells: -10.0 %, -2.83 %, +0.05 %, +0.33 %; within
+# 1.65 % from 64 cells at every area fraction 0.05 to 0.3) sets the
+# bounds: within 4 % at 32 cells, within 1 % and closer at 64.  The cylinder's
 # volume is its initial one to round-off, the liquid's too, and the
 # fluid's force on it (postProcessing/fixedBodies) is the body force on
 # the liquid, f rho V_liquid, within 1e-3 (measured 8e-5 at 32 cells).
@@ -21,7 +21,7 @@ read -r e32 v32 < <(python3 "$VHE_ROOT/benchmarks/rigid/squareArray.py" "$WORK/n
 read -r k64 e64 v64 < <(python3 "$VHE_ROOT/benchmarks/rigid/squareArray.py" "$WORK/n64" \
     | awk 'NR == 2 {print $3, $6, $7}')
 check sanganiAcrivos "abs($e64) < 0.01" "F/(mu U) = $k64 at 64 cells against 51.53 ($e64)"
-check sanganiAcrivosConverges "abs($e32) < 0.02 and abs($e64) < abs($e32)" "error $e32 at 32 cells, $e64 at 64"
+check sanganiAcrivosConverges "abs($e32) < 0.04 and abs($e64) < abs($e32)" "error $e32 at 32 cells, $e64 at 64"
 # The fluid's force on the cylinder (postProcessing/fixedBodies) balances
 # the body force on the liquid at steady state: f rho (liquid volume)
 fx=$(awk '!/^#/ {f = $3} END {print f}' "$WORK/n64/postProcessing/fixedBodies/0/forces.dat")
