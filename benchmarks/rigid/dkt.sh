@@ -7,23 +7,12 @@
 # with the tank full of water and its contact { strength 0.5; }; run on 2
 # ranks (decomposed in y).  dkt.py reads DIR/postProcessing/bodies/0/
 # bodies.dat (every 0.01 s).
-. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/tank.sh"
 d=$1 n=$2 tend=${3:-5}
-nx=$((10*n)) ny=$((40*n))
-rm -rf "$d"
-sceneCase floatingBodies "$d" W=0.02 H=0.08 nx="$nx" ny="$ny" \
-    depthWater=0.09 rhoWater=1000 nuWater=1e-6 nuAir=1e-6 \
-    rhoWood=1010 nuWood=1e-6 endTime="$tend" writeInterval=0.01 \
-    maxDeltaT=0.005 || exit 1
-cat > "$d/system/setBodiesDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
-bodies
-{
-    upper { material wood; shape disk; centre (0.01 0.072 0); radius 0.001; }
-    lower { material wood; shape disk; centre (0.0103 0.068 0); radius 0.001; }
-}
-DICT
-sed -i 's/n (2 1 1)/n (1 2 1)/' "$d/system/decomposeParDict"
+tankCase "$d" 0.02 0.08 $((10*n)) $((40*n)) 1010 "$tend" 0.005 \
+    "upper { material wood; shape disk; centre (0.01 0.072 0); radius 0.001; }
+       lower { material wood; shape disk; centre (0.0103 0.068 0); radius 0.001; }" \
+    || exit 1
 python3 - "$d/system/fvSolution" <<'PY' || exit 1
 import re, sys
 p = sys.argv[1]
@@ -34,6 +23,4 @@ if n != 1:
     sys.exit(p + ': no PCG p_rgh to set to GAMG')
 open(p, 'w').write(s)
 PY
-(cd "$d" && setFields > log.setFields 2>&1 && setBodies > log.setBodies 2>&1 \
-    && decomposePar > log.decomposePar 2>&1) || exit 1
-(cd "$d" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1)
+tankRun "$d"

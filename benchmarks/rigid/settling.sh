@@ -6,20 +6,10 @@
 # template with the tank full of water; run on 2 ranks (decomposed in y).
 # The disk's track is DIR/postProcessing/bodies/0/bodies.dat (every
 # 0.01 s); settling.py reads it.
-. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/tank.sh"
 d=$1 n=$2 tend=${3:-0.6}
 nx=$(python3 -c "print(round(0.02/(0.0025/$n)))")
-ny=$((3*nx))
-rm -rf "$d"
-sceneCase floatingBodies "$d" W=0.02 H=0.06 nx="$nx" ny="$ny" \
-    depthWater=0.07 rhoWater=1000 nuWater=1e-6 nuAir=1e-6 \
-    rhoWood=1500 nuWood=1e-6 endTime="$tend" writeInterval=0.01 \
-    maxDeltaT=0.002 || exit 1
-cat > "$d/system/setBodiesDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
-bodies { disk { material wood; shape disk; centre (0.01 0.04 0); radius 0.00125; } }
-DICT
-sed -i 's/n (2 1 1)/n (1 2 1)/' "$d/system/decomposeParDict"
-(cd "$d" && setFields > log.setFields 2>&1 && setBodies > log.setBodies 2>&1 \
-    && decomposePar > log.decomposePar 2>&1) || exit 1
-(cd "$d" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1)
+tankCase "$d" 0.02 0.06 "$nx" $((3*nx)) 1500 "$tend" 0.002 \
+    "disk { material wood; shape disk; centre (0.01 0.04 0); radius 0.00125; }" \
+    || exit 1
+tankRun "$d"

@@ -67,8 +67,7 @@ void Foam::rigidBodies::update()
     body_ = -1;
     w_.setSize(nCells);
     w_ = 0;
-    rhoAlpha_.setSize(nCells);
-    rhoAlpha_ = 0;
+    scalarField rhoAlpha(nCells, Zero);
     reached_.setSize(nCells);
     reached_ = 0;
 
@@ -94,7 +93,7 @@ void Foam::rigidBodies::update()
             {
                 w_[c] = wc;
                 body_[c] = nBodies_ + lab[c];
-                rhoAlpha_[c] = mixture_.phases()[i].rho*a[c];
+                rhoAlpha[c] = mixture_.phases()[i].rho*a[c];
             }
         }
         X0.append(regions_.centroid());
@@ -109,6 +108,17 @@ void Foam::rigidBodies::update()
     // Mass, centre of mass, positions and second moment (bodyRegions)
     List<vector> Xm;
     regions_.moments(body_, X0, rho*w_*V, M_, Xm, r_, J_);
+
+    // The solid's mass of each body, for the fixed bodies' forces only
+    solidMass_ = scalarList(nBodies_, Zero);
+    if (fixed_.found(true))
+    {
+        forAll(body_, c)
+        {
+            if (body_[c] >= 0) solidMass_[body_[c]] += rhoAlpha[c]*V[c];
+        }
+        bodyRegions::sumLists(solidMass_);
+    }
 }
 
 
@@ -175,9 +185,7 @@ void Foam::rigidBodies::writeForces
     // and lift of an obstacle, about its centre of mass.  (In a steady
     // flow driven by a body force f, the forces on the fixed bodies sum
     // to f times the fluid's mass exactly)
-    bool anyFixed = false;
-    forAll(fixed_, b) anyFixed = anyFixed || fixed_[b];
-    if (!anyFixed) return;
+    if (!fixed_.found(true)) return;
 
     const fvMesh& mesh = mixture_.rho().mesh();
     // g is registered with the mesh or (v1912's gravity) with the time
@@ -205,13 +213,6 @@ void Foam::rigidBodies::writeForces
             << " on each fixed rigid body [N, N m]" << nl
             << "# time body Fx Fy Fz Tx Ty Tz" << endl;
     }
-    scalarList Ms(nBodies_, Zero);
-    const scalarField& V = mesh.V();
-    forAll(body_, c)
-    {
-        if (body_[c] >= 0) Ms[body_[c]] += rhoAlpha_[c]*V[c];
-    }
-    bodyRegions::sumLists(Ms);
     if (Pstream::master())
     {
         OFstream& os = forceFile_();
@@ -219,7 +220,7 @@ void Foam::rigidBodies::writeForces
         forAll(fixed_, b)
         {
             if (!fixed_[b]) continue;
-            const vector F(-Fc[b] - Ms[b]*gb);
+            const vector F(-Fc[b] - solidMass_[b]*gb);
             const vector T(-Tc[b]);
             os  << mesh.time().value() << ' ' << b << ' '
                 << F.x() << ' ' << F.y() << ' ' << F.z() << ' '
@@ -279,17 +280,13 @@ void Foam::rigidBodies::solve
     // the time derivative's rho/dt, else the blend compounds step after
     // step at small dt); a cell of weight 1 is held at P times A
     const volScalarField A(UEqn.A());
-    penalty_.reset
+    volScalarField Cp
     (
-        new volScalarField
-        (
-            IOobject("rigidPenalty", mesh.time().timeName(), mesh),
-            mesh,
-            dimensionedScalar(A.dimensions(), Zero)
-        )
+        IOobject("rigidPenalty", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(A.dimensions(), Zero)
     );
-    const volScalarField& Cp = *penalty_;
-    scalarField& cp = penalty_->primitiveFieldRef();
+    scalarField& cp = Cp.primitiveFieldRef();
     const scalarField Addt(fvm::ddt(mixture_.rho(), U)().A());
     forAll(body_, c)
     {

@@ -1,0 +1,28 @@
+# Sourced by settling.sh and dkt.sh: a tank of the floatingBodies template
+# full of water (rho 1000, nu 1e-6), rigid bodies of material "wood",
+# decomposed in y for 2 ranks.
+. "$(dirname "${BASH_SOURCE[0]}")/../../tests/cases/lib.sh" 2>/dev/null
+
+# tankCase DIR W H NX NY RHO_BODY ENDTIME MAXDELTAT BODIES: the case in DIR,
+# the water 0.01 m above the top; BODIES is the setBodiesDict's bodies
+# entries
+tankCase() {
+    local d=$1 W=$2 H=$3 nx=$4 ny=$5 rho=$6 tend=$7 dtmax=$8 bodies=$9
+    rm -rf "$d"
+    sceneCase floatingBodies "$d" W="$W" H="$H" nx="$nx" ny="$ny" \
+        depthWater="$(python3 -c "print(round($H + 0.01, 9))")" rhoWater=1000 \
+        nuWater=1e-6 nuAir=1e-6 rhoWood="$rho" nuWood=1e-6 \
+        endTime="$tend" writeInterval=0.01 maxDeltaT="$dtmax" || return 1
+    cat > "$d/system/setBodiesDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
+bodies { $bodies }
+DICT
+    sed -i 's/n (2 1 1)/n (1 2 1)/' "$d/system/decomposeParDict"
+}
+
+# tankRun DIR: set the fields and bodies, decompose, run on 2 ranks
+tankRun() {
+    (cd "$1" && setFields > log.setFields 2>&1 && setBodies > log.setBodies 2>&1 \
+        && decomposePar > log.decomposePar 2>&1) || return 1
+    (cd "$1" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1)
+}
