@@ -34,6 +34,7 @@ Description
 #include "rigidBodies.H"
 #include "bodyColours.H"
 #include "bodyContact.H"
+#include "surfaceTension.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

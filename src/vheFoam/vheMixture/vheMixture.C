@@ -344,7 +344,8 @@ Foam::vheMixture::vheMixture
     // #include a parameter file here.  Phase entries are checked strictly.
     {
         const wordList known
-        ({"fluids", "solids", "bodyForce", "solidFractionMin", "contact"});
+        ({"fluids", "solids", "bodyForce", "solidFractionMin", "contact",
+          "sigmas"});
         for (const entry& e : *this)
         {
             if (!known.found(e.keyword()) && e.keyword() != "FoamFile"

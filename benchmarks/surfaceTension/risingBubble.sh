@@ -1,0 +1,113 @@
+#!/bin/bash
+# risingBubble.sh DIR N [ENDTIME]: Hysing et al. (2009)'s test case 1, a 2D
+# bubble rising in a liquid: box 1 x 2, bubble radius 0.25 at (0.5, 0.5);
+# liquid rho 1000, mu 10; bubble rho 100, mu 1; sigma 24.5; g 0.98
+# downward; no-slip walls top and bottom, slip walls at the sides.  N
+# cells per unit length (h = 1/N: N x 2N cells), to t = ENDTIME (default
+# 3), the step set by maxCo 0.2 and the capillary limit.  The same case
+# runs under vheFoam (DIR/vheFoam) and Debian's interFoam (DIR/interFoam,
+# made by bin/vheToInterFoam), side by side.  The phaseStatistics function
+# object writes the bubble's centroid, rise velocity and circularity every
+# step (postProcessing/bubble/0/phaseStatistics.dat); risingBubble.py
+# reads them.
+. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+here=$(cd "$(dirname "$0")" && pwd)
+d=$1 n=$2 tend=${3:-3}
+c=$d/vheFoam
+rm -rf "$d"; mkdir -p "$c/0" "$c/constant" "$c/system"
+lz=$(python3 -c "print(1.0/$n)")
+cat > "$c/system/blockMeshDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+vertices ( (0 0 0) (1 0 0) (1 2 0) (0 2 0) (0 0 $lz) (1 0 $lz) (1 2 $lz) (0 2 $lz) );
+blocks ( hex (0 1 2 3 4 5 6 7) ($n $((2*n)) 1) simpleGrading (1 1 1) );
+boundary
+(
+    topBottom { type wall; faces ((0 1 5 4) (3 7 6 2)); }
+    sides { type wall; faces ((0 4 7 3) (1 2 6 5)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
+);
+DICT
+cat > "$c/system/controlDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application vheFoam; libs (vheFoam);
+startFrom latestTime; startTime 0; stopAt endTime; endTime $tend;
+deltaT 1e-4; writeControl adjustable; writeInterval 0.5; purgeWrite 0;
+writeFormat ascii; writePrecision 10; timePrecision 6;
+runTimeModifiable false; adjustTimeStep yes; maxCo 0.2; maxAlphaCo 0.2;
+maxDeltaT 0.01;
+functions
+{
+    bubble
+    {
+        type phaseStatistics; libs (vheFoam); alpha alpha.gas;
+        writeControl timeStep; writeInterval 1;
+    }
+}
+DICT
+cat > "$c/system/fvSchemes" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
+ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes
+{
+    default none;
+    div(rhoPhi,U) Gauss linearUpwind grad(U);
+    div(phi,alpha) Gauss vanLeer;
+    div(phirb,alpha) Gauss linear;
+    div((mu*dev2(T(grad(U))))) Gauss linear;
+}
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+DICT
+cat > "$c/system/fvSolution" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
+solvers
+{
+    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
+    p_rgh { solver PCG; preconditioner DIC; tolerance 1e-9; relTol 0.01; }
+    p_rghFinal { \$p_rgh; relTol 0; }
+    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-9; relTol 0; }
+    UFinal { \$U; }
+}
+PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
+DICT
+cat > "$c/constant/vheProperties" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
+fluids
+{
+    liquid { rho [1 -3 0 0 0 0 0] 1000; mu [1 -1 -1 0 0 0 0] 10; }
+    gas    { rho [1 -3 0 0 0 0 0] 100;  mu [1 -1 -1 0 0 0 0] 1; }
+}
+sigmas ( (liquid gas) [1 0 -2 0 0 0 0] 24.5 );
+DICT
+cat > "$c/constant/g" <<DICT
+FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
+dimensions [0 1 -2 0 0 0 0]; value (0 -0.98 0);
+DICT
+cat > "$c/0/U" <<DICT
+FoamFile { version 2.0; format ascii; class volVectorField; object U; }
+dimensions [0 1 -1 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField { topBottom { type noSlip; } sides { type slip; } frontAndBack { type empty; } }
+DICT
+cat > "$c/0/p_rgh" <<DICT
+FoamFile { version 2.0; format ascii; class volScalarField; object p_rgh; }
+dimensions [1 -1 -2 0 0 0 0];
+internalField uniform 0;
+boundaryField { ".*" { type fixedFluxPressure; value uniform 0; } frontAndBack { type empty; } }
+DICT
+for phase in liquid gas; do
+    side=$([ $phase = liquid ] && echo outside)
+    {
+        echo "FoamFile { version 2.0; format ascii; class volScalarField; object alpha.$phase; }"
+        echo "dimensions [0 0 0 0 0 0 0];"
+        python3 "$here/fraction.py" $n $((2*n)) 1 1 2 $lz 0.5 0.5 0 0.25 $side
+        echo "boundaryField { \".*\" { type zeroGradient; } frontAndBack { type empty; } }"
+    } > "$c/0/alpha.$phase"
+done
+(cd "$c" && blockMesh > log.blockMesh 2>&1) || exit 1
+"$VHE_ROOT/bin/vheToInterFoam" "$c" "$d/interFoam" > /dev/null || exit 1
+(cd "$c" && vheFoam > log.vheFoam 2>&1) &
+(cd "$d/interFoam" && interFoam > log.interFoam 2>&1) &
+wait

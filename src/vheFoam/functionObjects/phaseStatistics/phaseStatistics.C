@@ -1,0 +1,122 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: a phase's volume, centroid, velocity and shape
+\*---------------------------------------------------------------------------*/
+
+#include "phaseStatistics.H"
+#include "volFields.H"
+#include "fvcGrad.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(phaseStatistics, 0);
+    addToRunTimeSelectionTable(functionObject, phaseStatistics, dictionary);
+}
+}
+
+
+void Foam::functionObjects::phaseStatistics::writeFileHeader(Ostream& os)
+{
+    writeHeader(os, "Volume, centroid, velocity and shape of " + alphaName_);
+    writeCommented(os, "Time");
+    for (const char* c : {"volume", "x", "y", "z", "Ux", "Uy", "Uz", "area",
+                          "circularity"})
+    {
+        writeTabbed(os, c);
+    }
+    os << endl;
+}
+
+
+Foam::functionObjects::phaseStatistics::phaseStatistics
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict),
+    alphaName_()
+{
+    read(dict);
+    writeFileHeader(file());
+}
+
+
+bool Foam::functionObjects::phaseStatistics::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+    alphaName_ = dict.get<word>("alpha");
+    return true;
+}
+
+
+bool Foam::functionObjects::phaseStatistics::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::phaseStatistics::write()
+{
+    const volScalarField& alpha = lookupObject<volScalarField>(alphaName_);
+    const volVectorField& U = lookupObject<volVectorField>("U");
+    const scalarField& V = mesh_.V();
+    const volVectorField gradAlpha(fvc::grad(alpha));
+
+    scalar vol = 0, area = 0;
+    vector c(Zero), u(Zero);
+    forAll(alpha, i)
+    {
+        const scalar w = alpha[i]*V[i];
+        vol += w;
+        c += w*mesh_.C()[i];
+        u += w*U[i];
+        area += mag(gradAlpha[i])*V[i];
+    }
+    reduce(vol, sumOp<scalar>());
+    reduce(area, sumOp<scalar>());
+    reduce(c, sumOp<vector>());
+    reduce(u, sumOp<vector>());
+    c /= max(vol, VSMALL);
+    u /= max(vol, VSMALL);
+
+    // Circle (2D: the mesh is one cell thick, t, in its empty direction;
+    // vol = A t, area = P t) or sphere of the phase's volume
+    scalar circ = 0;
+    if (mesh_.nSolutionD() == 2)
+    {
+        const boundBox& bb = mesh_.bounds();
+        scalar t = 1;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (mesh_.geometricD()[d] < 0) t = bb.span()[d];
+        }
+        circ = 2*sqrt(constant::mathematical::pi*vol*t)/max(area, VSMALL);
+    }
+    else
+    {
+        circ = cbrt(36*constant::mathematical::pi*sqr(vol))/max(area, VSMALL);
+    }
+
+    Log << type() << ' ' << name() << " write: volume " << vol
+        << " centroid " << c << " velocity " << u
+        << " circularity " << circ << endl;
+
+    if (Pstream::master())
+    {
+        writeCurrentTime(file());
+        file() << tab << vol;
+        for (direction d = 0; d < 3; ++d) file() << tab << c[d];
+        for (direction d = 0; d < 3; ++d) file() << tab << u[d];
+        file() << tab << area << tab << circ << endl;
+    }
+    return true;
+}
+
+
+// ************************************************************************* //
