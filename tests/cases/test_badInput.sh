@@ -76,6 +76,12 @@ d=$(variant contactStrength); echo "contact { strength -1; }" >> "$d/$P"
 expectFatal contactStrength "$d" vheFoam "contact \{ strength \} must lie in \[0, 2\]" vheProperties
 d=$(variant contactEntry); echo "contact { stiffness 1; }" >> "$d/$P"
 expectFatal contactEntry "$d" vheFoam "Unknown entry 'stiffness' in contact" vheProperties
+d=$(variant sigmaSolid); echo "sigmas ( (liquid rubber) 0.07 );" >> "$d/$P"
+expectFatal sigmaSolid "$d" vheFoam "sigmas: 'rubber' is a solid; solids take no surface tension" vheProperties
+d=$(variant sigmaUnknownFluid); echo "sigmas ( (liquid oil) 0.07 );" >> "$d/$P"
+expectFatal sigmaUnknownFluid "$d" vheFoam "sigmas: unknown fluid 'oil'" vheProperties
+d=$(variant sigmaDimensions); echo "sigmas ( (liquid air) [1 0 -1 0 0 0 0] 0.07 );" >> "$d/$P"
+expectFatal sigmaDimensions "$d" vheFoam "sigmas: .* has dimensions" vheProperties
 d=$(variant negativeRho); setEntry "$d/$P" fluids/liquid/rho "[1 -3 0 0 0 0 0] -1"
 expectFatal negativeRho "$d" vheFoam "rho of liquid must be positive" vheProperties
 d=$(variant zeroBodyDensity); setEntry "$d/$P" solids/rubber/rho "[1 -3 0 0 0 0 0] 0"

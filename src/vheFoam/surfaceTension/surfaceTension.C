@@ -177,6 +177,7 @@ Foam::surfaceTension::surfaceTension
 :
     mixture_(mixture),
     U_(U),
+    hf_(U.mesh()),
     deltaN_
     (
         "deltaN",
@@ -188,7 +189,7 @@ Foam::surfaceTension::surfaceTension
     {
         return;
     }
-    Info<< "Surface tension (continuum surface force):" << nl;
+    Info<< "Surface tension (height-function curvature, balanced force):" << nl;
     for (const pair& p : pairs_)
     {
         Info<< "    (" << mixture_.phases()[p.i].name << ' '
@@ -244,8 +245,27 @@ Foam::tmp<Foam::surfaceScalarField> Foam::surfaceTension::force() const
         const volScalarField& ai = mixture_.alphas()[p.i];
         const volScalarField& aj = mixture_.alphas()[p.j];
         const dimensionedScalar sigma("sigma", dimMass/sqr(dimTime), p.sigma);
+        // The face curvature: the height functions' where a cell of the
+        // face has one (their mean if both have), else the continuum
+        // surface force's
+        volScalarField Khf("Khf", K(p)*0);
+        volScalarField valid("valid", ai*0);
+        hf_.curvature(ai, Khf, valid);
+        const surfaceScalarField validf(fvc::interpolate(valid));
+        surfaceScalarField Kf(fvc::interpolate(K(p)));
+        const surfaceScalarField Kvalid(fvc::interpolate(Khf*valid));
+        Kf.primitiveFieldRef() = pos(validf.primitiveField() - SMALL)
+            *Kvalid.primitiveField()/max(validf.primitiveField(), SMALL)
+          + neg0(validf.primitiveField() - SMALL)*Kf.primitiveField();
+        forAll(Kf.boundaryField(), patchi)
+        {
+            scalarField& kb = Kf.boundaryFieldRef()[patchi];
+            const scalarField& vb = validf.boundaryField()[patchi];
+            const scalarField& kvb = Kvalid.boundaryField()[patchi];
+            kb = pos(vb - SMALL)*kvb/max(vb, SMALL) + neg0(vb - SMALL)*kb;
+        }
         tf.ref() +=
-            sigma*fvc::interpolate(K(p))
+            sigma*Kf
            *(
                 fvc::interpolate(aj)*fvc::snGrad(ai)
               - fvc::interpolate(ai)*fvc::snGrad(aj)
