@@ -4,7 +4,8 @@
 # liquid rho 1000, mu 10; bubble rho 100, mu 1; sigma 24.5; g 0.98
 # downward; no-slip walls top and bottom, slip walls at the sides.  N
 # cells per unit length (h = 1/N: N x 2N cells), to t = ENDTIME (default
-# 3), the step set by maxCo 0.2 and the capillary limit.  The same case
+# 3), the step set by maxCo 0.2 and the capillary limit (interFoam's
+# maxDeltaT, since it has none of its own).  The same case
 # runs under vheFoam (DIR/vheFoam) and Debian's interFoam (DIR/interFoam,
 # made by bin/vheToInterFoam), side by side.  The phaseStatistics function
 # object writes the bubble's centroid, rise velocity and circularity every
@@ -16,6 +17,8 @@ d=$1 n=$2 tend=${3:-3}
 c=$d/vheFoam
 rm -rf "$d"; mkdir -p "$c/0" "$c/constant" "$c/system"
 lz=$(python3 -c "print(1.0/$n)")
+# interFoam has no capillary step limit: both take Brackbill's as maxDeltaT
+dtcap=$(python3 -c "import math; print(min(0.01, math.sqrt(550*(1.0/$n)**3/(2*math.pi*24.5))))")
 cat > "$c/system/blockMeshDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
 vertices ( (0 0 0) (1 0 0) (1 2 0) (0 2 0) (0 0 $lz) (1 0 $lz) (1 2 $lz) (0 2 $lz) );
@@ -34,7 +37,7 @@ startFrom latestTime; startTime 0; stopAt endTime; endTime $tend;
 deltaT 1e-4; writeControl adjustable; writeInterval 0.5; purgeWrite 0;
 writeFormat ascii; writePrecision 10; timePrecision 6;
 runTimeModifiable false; adjustTimeStep yes; maxCo 0.2; maxAlphaCo 0.2;
-maxDeltaT 0.01;
+maxDeltaT $dtcap;
 functions
 {
     bubble
