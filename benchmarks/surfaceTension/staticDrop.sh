@@ -20,7 +20,12 @@ print(math.sqrt(sigma*rho*D/La), math.sqrt(rho*dx**3/(2*math.pi*sigma)))")"
 endTime=$(python3 -c "print(repr($steps*$dt))")
 c=$d/vheFoam
 rm -rf "$d"; mkdir -p "$c/0" "$c/constant" "$c/system"
-if [ "$dim" = 3 ]; then nz=$N lz=1 cz=0.5 front=wall; else nz=1 lz=$(python3 -c "print(1.0/$N)") cz=0 front=empty; fi
+# 3D: the front and back are walls too
+if [ "$dim" = 3 ]; then
+    nz=$N lz=1 cz=0.5 front=wall fU=noSlip fp=fixedFluxPressure fa=zeroGradient
+else
+    nz=1 lz=$(python3 -c "print(1.0/$N)") cz=0 front=empty fU=empty fp=empty fa=empty
+fi
 cat > "$c/system/blockMeshDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
 vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 $lz) (1 0 $lz) (1 1 $lz) (0 1 $lz) );
@@ -84,13 +89,13 @@ cat > "$c/0/U" <<DICT
 FoamFile { version 2.0; format ascii; class volVectorField; object U; }
 dimensions [0 1 -1 0 0 0 0];
 internalField uniform (0 0 0);
-boundaryField { walls { type noSlip; } frontAndBack { type $front; } }
+boundaryField { walls { type noSlip; } frontAndBack { type $fU; } }
 DICT
 cat > "$c/0/p_rgh" <<DICT
 FoamFile { version 2.0; format ascii; class volScalarField; object p_rgh; }
 dimensions [1 -1 -2 0 0 0 0];
 internalField uniform 0;
-boundaryField { walls { type fixedFluxPressure; value uniform 0; } frontAndBack { type $front; } }
+boundaryField { walls { type fixedFluxPressure; value uniform 0; } frontAndBack { type $fp; value uniform 0; } }
 DICT
 for phase in liquid gas; do
     side=$([ $phase = gas ] && echo outside)
@@ -98,7 +103,7 @@ for phase in liquid gas; do
         echo "FoamFile { version 2.0; format ascii; class volScalarField; object alpha.$phase; }"
         echo "dimensions [0 0 0 0 0 0 0];"
         python3 "$here/fraction.py" $N $N $nz 1 1 $lz 0.5 0.5 $cz 0.25 $side
-        echo "boundaryField { walls { type zeroGradient; } frontAndBack { type $front; } }"
+        echo "boundaryField { walls { type zeroGradient; } frontAndBack { type $fa; } }"
     } > "$c/0/alpha.$phase"
 done
 (cd "$c" && blockMesh > log.blockMesh 2>&1) || exit 1

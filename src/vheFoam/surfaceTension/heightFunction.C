@@ -98,7 +98,8 @@ Foam::tmp<Foam::volScalarField> Foam::heightFunction::shift
 (
     const volScalarField& f,
     const direction d,
-    const int s
+    const int s,
+    const scalar wallValue
 ) const
 {
     // The values across coupled faces (processor, cyclic)
@@ -129,6 +130,10 @@ Foam::tmp<Foam::volScalarField> Foam::heightFunction::shift
         else if (nbFace_[celli][side] >= 0)
         {
             g[celli] = across[nbFace_[celli][side]];
+        }
+        else if (wallValue != GREAT)
+        {
+            g[celli] = wallValue;
         }
     }
     tg.ref().correctBoundaryConditions();
@@ -220,7 +225,7 @@ void Foam::heightFunction::curvature
         if (t.size() == 1)
         {
             const tmp<volScalarField> hp(shift(h0, t[0], 1)), hm(shift(h0, t[0], -1));
-            const tmp<volScalarField> op(shift(o0, t[0], 1)), om(shift(o0, t[0], -1));
+            const tmp<volScalarField> op(shift(o0, t[0], 1, 0)), om(shift(o0, t[0], -1, 0));
             forAll(k, c)
             {
                 if (o0[c] != 0 && op()[c] == o0[c] && om()[c] == o0[c])
@@ -243,7 +248,7 @@ void Foam::heightFunction::curvature
                 if (i != 0)
                 {
                     hi = shift(h0, t[0], i);
-                    oi = shift(o0, t[0], i);
+                    oi = shift(o0, t[0], i, 0);
                 }
                 for (int j = -1; j <= 1; ++j)
                 {
@@ -256,7 +261,7 @@ void Foam::heightFunction::curvature
                     else
                     {
                         hs.set(slot, shift(hi(), t[1], j).ptr());
-                        os.set(slot, shift(oi(), t[1], j).ptr());
+                        os.set(slot, shift(oi(), t[1], j, 0).ptr());
                     }
                 }
             }

@@ -251,6 +251,32 @@ Foam::tmp<Foam::surfaceScalarField> Foam::surfaceTension::force() const
         volScalarField Khf("Khf", K(p)*0);
         volScalarField valid("valid", ai*0);
         hf_.curvature(ai, Khf, valid);
+        // Beside a contact-angle wall the angle is the continuum surface
+        // force's (its wall normal, correctContactAngle): the heights there
+        // would not know it.  Two layers of cells.
+        forAll(mesh.boundary(), patchi)
+        {
+            if
+            (
+                !isA<alphaContactAngleTwoPhaseFvPatchScalarField>
+                (
+                    ai.boundaryField()[patchi]
+                )
+             && !isA<alphaContactAngleTwoPhaseFvPatchScalarField>
+                (
+                    aj.boundaryField()[patchi]
+                )
+            )
+            {
+                continue;
+            }
+            for (const label c : mesh.boundary()[patchi].faceCells())
+            {
+                valid[c] = 0;
+                for (const label n : mesh.cellCells()[c]) valid[n] = 0;
+            }
+        }
+        valid.correctBoundaryConditions();
         const surfaceScalarField validf(fvc::interpolate(valid));
         surfaceScalarField Kf(fvc::interpolate(K(p)));
         const surfaceScalarField Kvalid(fvc::interpolate(Khf*valid));
