@@ -9,7 +9,7 @@
 
 run=$(mktemp -d /tmp/vheFoamRun.XXXXXX)
 trap 'rm -rf "$run"' EXIT
-for t in periodicChannel damBreakSpheres floatingBlock stairs bubbleObstacle; do
+for t in periodicChannel damBreakSpheres floatingBlock stairs bubbleObstacle dropParticle; do
     cp -r "$VHE_ROOT/tutorials/$t" "$run/$t"
     rm -rf "$run/$t/cases" "$run/$t/results" "$run/$t"/log.*
     if (cd "$run/$t" && ./Allrun -setup > log.setup 2>&1); then

@@ -20,7 +20,9 @@ namespace functionObjects
 
 void Foam::functionObjects::phaseStatistics::writeFileHeader(Ostream& os)
 {
-    writeHeader(os, "Volume, centroid, velocity and shape of " + alphaName_);
+    string names;
+    for (const word& n : alphaNames_) names += (names.empty() ? "" : " + ") + n;
+    writeHeader(os, "Volume, centroid, velocity and shape of " + names);
     writeCommented(os, "Time");
     for (const char* c : {"volume", "x", "y", "z", "Ux", "Uy", "Uz", "area",
                           "circularity"})
@@ -40,7 +42,7 @@ Foam::functionObjects::phaseStatistics::phaseStatistics
 :
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
-    alphaName_()
+    alphaNames_()
 {
     read(dict);
     writeFileHeader(file());
@@ -51,7 +53,14 @@ bool Foam::functionObjects::phaseStatistics::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
-    alphaName_ = dict.get<word>("alpha");
+    if (dict.found("alphas"))
+    {
+        alphaNames_ = dict.get<wordList>("alphas");
+    }
+    else
+    {
+        alphaNames_ = wordList(1, dict.get<word>("alpha"));
+    }
     return true;
 }
 
@@ -64,7 +73,11 @@ bool Foam::functionObjects::phaseStatistics::execute()
 
 bool Foam::functionObjects::phaseStatistics::write()
 {
-    const volScalarField& alpha = lookupObject<volScalarField>(alphaName_);
+    volScalarField alpha(lookupObject<volScalarField>(alphaNames_[0]));
+    for (label k = 1; k < alphaNames_.size(); ++k)
+    {
+        alpha += lookupObject<volScalarField>(alphaNames_[k]);
+    }
     const volVectorField& U = lookupObject<volVectorField>("U");
     const scalarField& V = mesh_.V();
     scalar vol = 0;
