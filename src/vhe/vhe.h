@@ -632,6 +632,20 @@ void vhe_compress_pair(long nFaces, const double *phic, const double *Sf,
                        const double *gj, double deltaN, double *fi,
                        double *fj);
 
+/* ---------------------------------------------------------------- tension */
+
+/*
+ * vhe_height_curvature: the curvature of an interface y = h(x1, x2) from
+ * its heights h[3 (i + 1) + (j + 1)] at the offsets (i d1, j d2), i, j in
+ * {-1, 0, 1}, by central differences (tension.c): dim 2 uses h[1], h[4],
+ * h[7] (offsets along x1 only) and returns -h''/(1 + h'^2)^(3/2); dim 3 returns
+ * -(h11 (1 + h2^2) + h22 (1 + h1^2) - 2 h12 h1 h2)/(1 + h1^2 + h2^2)^(3/2).
+ * The sign is interFoam's K = -div(n) with n toward the side below the
+ * heights: a drop below y = h (a cap) has K > 0.  Second order in d.
+ */
+double vhe_height_curvature(const double h[9], double d1, double d2,
+                            int dim);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1385,6 +1385,7 @@ Suite *logb_suite(void);   /* test_logb.c */
 Suite *bodies_suite(void); /* test_bodies.c */
 Suite *contact_suite(void); /* test_contact.c */
 Suite *shares_suite(void);  /* test_shares.c */
+Suite *tension_suite(void); /* test_tension.c */
 
 int main(void)
 {
@@ -1400,6 +1401,7 @@ int main(void)
     srunner_add_suite(sr, bodies_suite());
     srunner_add_suite(sr, contact_suite());
     srunner_add_suite(sr, shares_suite());
+    srunner_add_suite(sr, tension_suite());
     srunner_run_all(sr, CK_NORMAL);
     nf = srunner_ntests_failed(sr);
     srunner_free(sr);

@@ -4,6 +4,7 @@
 
 #include "heightFunction.H"
 #include "fvc.H"
+#include "vhe.h"
 
 // * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
 
@@ -230,10 +231,10 @@ void Foam::heightFunction::curvature
             {
                 if (o0[c] != 0 && op()[c] == o0[c] && om()[c] == o0[c])
                 {
+                    const double h[9] =
+                        {0, hm()[c], 0, 0, h0[c], 0, 0, hp()[c], 0};
                     const scalar dt = delta_[c][t[0]];
-                    const scalar h1 = (hp()[c] - hm()[c])/(2*dt);
-                    const scalar h11 = (hp()[c] - 2*h0[c] + hm()[c])/sqr(dt);
-                    k[c] = -h11/pow(1 + sqr(h1), 1.5);
+                    k[c] = vhe_height_curvature(h, dt, dt, 2);
                     v[c] = 1;
                 }
             }
@@ -270,17 +271,12 @@ void Foam::heightFunction::curvature
                 bool ok = o0[c] != 0;
                 for (label s = 0; s < 9 && ok; ++s) ok = os[s][c] == o0[c];
                 if (!ok) continue;
-                auto hv = [&](int i, int j) { return hs[3*(i + 1) + (j + 1)][c]; };
-                const scalar d1 = delta_[c][t[0]], d2 = delta_[c][t[1]];
-                const scalar h1 = (hv(1, 0) - hv(-1, 0))/(2*d1);
-                const scalar h2 = (hv(0, 1) - hv(0, -1))/(2*d2);
-                const scalar h11 = (hv(1, 0) - 2*hv(0, 0) + hv(-1, 0))/sqr(d1);
-                const scalar h22 = (hv(0, 1) - 2*hv(0, 0) + hv(0, -1))/sqr(d2);
-                const scalar h12 =
-                    (hv(1, 1) - hv(1, -1) - hv(-1, 1) + hv(-1, -1))/(4*d1*d2);
-                k[c] =
-                  - (h11*(1 + sqr(h2)) + h22*(1 + sqr(h1)) - 2*h12*h1*h2)
-                   /pow(1 + sqr(h1) + sqr(h2), 1.5);
+                double h[9];
+                for (label s = 0; s < 9; ++s) h[s] = hs[s][c];
+                k[c] = vhe_height_curvature
+                (
+                    h, delta_[c][t[0]], delta_[c][t[1]], 3
+                );
                 v[c] = 1;
             }
         }
