@@ -40,6 +40,8 @@ pick floatingBodies_scene.png "$t/floatingBodies/results/scene_t1.png"
 pick floatingBodies_heights.png "$t/floatingBodies/results/heights.png"
 pick stairs_scene.png "$t"/stairs/results/scene_t1*.png
 pick bubbleObstacle_scene.png "$t"/bubbleObstacle/results/scene_amr_t*.png
+pick dropParticle_scene.png "$t/dropParticle/results/scene_t0.5.png"
+pick risingBubble.png "$b/surfaceTension/results/risingBubble.png"
 pick errorVsRuntime.png "$b/errorVsRuntime/errorVsRuntime.png"
 pick transport.png "$b/transport/results/transport.png"
 pick performance.png "$b/performance/results/performance.png"
