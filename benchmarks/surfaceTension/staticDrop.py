@@ -27,7 +27,7 @@ def field(path):
         return None, vals
     start = text.index("(", i)
     n = int(text[text.index(">", i) + 1:start])
-    body = text[start + 1:text.index("\n)\n", start)]
+    body = text[start + 1:text.index("\n)", start)]
     nums = [float(x) for x in NUMBER.findall(body)]
     per = len(nums)//n
     return n, [nums[k*per:(k + 1)*per] for k in range(n)]
