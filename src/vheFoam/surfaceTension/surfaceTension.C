@@ -248,7 +248,8 @@ Foam::tmp<Foam::surfaceScalarField> Foam::surfaceTension::force() const
         // The face curvature: the height functions' where a cell of the
         // face has one (their mean if both have), else the continuum
         // surface force's
-        volScalarField Khf("Khf", K(p)*0);
+        const volScalarField Kcsf(K(p));
+        volScalarField Khf("Khf", Kcsf*0);
         volScalarField valid("valid", ai*0);
         hf_.curvature(ai, Khf, valid);
         // Beside a contact-angle wall the angle is the continuum surface
@@ -278,7 +279,7 @@ Foam::tmp<Foam::surfaceScalarField> Foam::surfaceTension::force() const
         }
         valid.correctBoundaryConditions();
         const surfaceScalarField validf(fvc::interpolate(valid));
-        surfaceScalarField Kf(fvc::interpolate(K(p)));
+        surfaceScalarField Kf(fvc::interpolate(Kcsf));
         const surfaceScalarField Kvalid(fvc::interpolate(Khf*valid));
         Kf.primitiveFieldRef() = pos(validf.primitiveField() - SMALL)
             *Kvalid.primitiveField()/max(validf.primitiveField(), SMALL)
