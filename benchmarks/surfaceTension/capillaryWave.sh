@@ -8,6 +8,7 @@
 # (DIR/vheFoam) and interFoam (DIR/interFoam) side by side;
 # capillaryWave.py compares the amplitude with prosperetti.py's.
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/common.sh"
 d=$1 n=$2
 c=$d/vheFoam
 rm -rf "$d"; mkdir -p "$c/0" "$c/constant" "$c/system"
@@ -35,32 +36,7 @@ writeFormat ascii; writePrecision 12; timePrecision 8;
 runTimeModifiable false; adjustTimeStep yes; maxCo 0.5; maxAlphaCo 0.5;
 maxDeltaT $dt;
 DICT
-sed -n '/^cat > "\$c\/system\/fvSchemes"/,/^DICT$/p' "$(dirname "$0")/staticDrop.sh" | sed '1d;$d' > "$c/system/fvSchemes"
-cat > "$c/system/fvSolution" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
-solvers
-{
-    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
-    p_rgh { solver PCG; preconditioner DIC; tolerance 1e-10; relTol 0; }
-    p_rghFinal { \$p_rgh; }
-    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-10; relTol 0; }
-    UFinal { \$U; }
-}
-PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
-DICT
-cat > "$c/constant/vheProperties" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
-fluids
-{
-    liquid { rho [1 -3 0 0 0 0 0] 1; mu [1 -1 -1 0 0 0 0] $mu; }
-    gas    { rho [1 -3 0 0 0 0 0] 1; mu [1 -1 -1 0 0 0 0] $mu; }
-}
-sigmas ( (liquid gas) 1 );
-DICT
-cat > "$c/constant/g" <<DICT
-FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
-dimensions [0 1 -2 0 0 0 0]; value (0 0 0);
-DICT
+st_dicts "$c" 1e-10 0 1 $mu 1 $mu 1 0
 cat > "$c/0/U" <<DICT
 FoamFile { version 2.0; format ascii; class volVectorField; object U; }
 dimensions [0 1 -1 0 0 0 0];
@@ -95,8 +71,4 @@ print(');')"
         echo "boundaryField { left { type cyclic; } right { type cyclic; } walls { type zeroGradient; } frontAndBack { type empty; } }"
     } > "$c/0/alpha.$phase"
 done
-(cd "$c" && blockMesh > log.blockMesh 2>&1) || exit 1
-"$VHE_ROOT/bin/vheToInterFoam" "$c" "$d/interFoam" > /dev/null || exit 1
-(cd "$c" && vheFoam > log.vheFoam 2>&1) &
-(cd "$d/interFoam" && interFoam > log.interFoam 2>&1) &
-wait
+st_run "$d"

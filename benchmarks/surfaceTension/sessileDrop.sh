@@ -9,6 +9,7 @@
 # (postProcessing/drop/0/phaseStatistics.dat).  The same case runs under
 # interFoam (DIR/interFoam).
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/common.sh"
 here=$(cd "$(dirname "$0")" && pwd)
 d=$1 theta=$2 n=${3:-64} tend=${4:-3}
 c=$d/vheFoam
@@ -39,33 +40,7 @@ functions
            writeControl timeStep; writeInterval 1; }
 }
 DICT
-cp "$here/../../benchmarks/surfaceTension/fvSchemes" "$c/system/fvSchemes" 2>/dev/null || \
-    sed -n '/^cat > "\$c\/system\/fvSchemes"/,/^DICT$/p' "$here/staticDrop.sh" | sed '1d;$d' > "$c/system/fvSchemes"
-cat > "$c/system/fvSolution" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
-solvers
-{
-    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
-    p_rgh { solver PCG; preconditioner DIC; tolerance 1e-9; relTol 0; }
-    p_rghFinal { \$p_rgh; }
-    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-9; relTol 0; }
-    UFinal { \$U; }
-}
-PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
-DICT
-cat > "$c/constant/vheProperties" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
-fluids
-{
-    liquid { rho [1 -3 0 0 0 0 0] 1; mu [1 -1 -1 0 0 0 0] 0.02; }
-    gas    { rho [1 -3 0 0 0 0 0] 1; mu [1 -1 -1 0 0 0 0] 0.02; }
-}
-sigmas ( (liquid gas) 1 );
-DICT
-cat > "$c/constant/g" <<DICT
-FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
-dimensions [0 1 -2 0 0 0 0]; value (0 0 0);
-DICT
+st_dicts "$c" 1e-9 0 1 0.02 1 0.02 1 0
 cat > "$c/0/U" <<DICT
 FoamFile { version 2.0; format ascii; class volVectorField; object U; }
 dimensions [0 1 -1 0 0 0 0];
@@ -89,8 +64,4 @@ for phase in liquid gas; do
         echo "boundaryField { floor { $floorBC } walls { type zeroGradient; } frontAndBack { type empty; } }"
     } > "$c/0/alpha.$phase"
 done
-(cd "$c" && blockMesh > log.blockMesh 2>&1) || exit 1
-"$VHE_ROOT/bin/vheToInterFoam" "$c" "$d/interFoam" > /dev/null || exit 1
-(cd "$c" && vheFoam > log.vheFoam 2>&1) &
-(cd "$d/interFoam" && interFoam > log.interFoam 2>&1) &
-wait
+st_run "$d"

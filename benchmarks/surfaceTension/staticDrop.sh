@@ -9,6 +9,7 @@
 # steps of the capillary step limit sqrt(rho dx^3/(2 pi sigma)).
 # staticDrop.py reads the pressure jump and the spurious velocity.
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/common.sh"
 here=$(cd "$(dirname "$0")" && pwd)
 d=$1 n=$2 steps=${3:-1000} dim=${4:-2}
 N=$((2*n))
@@ -44,47 +45,7 @@ deltaT $dt; writeControl timeStep; writeInterval $steps; purgeWrite 0;
 writeFormat ascii; writePrecision 12; timePrecision 12;
 runTimeModifiable false; adjustTimeStep no; maxCo 1; maxAlphaCo 1;
 DICT
-cat > "$c/system/fvSchemes" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
-ddtSchemes { default Euler; }
-gradSchemes { default Gauss linear; }
-divSchemes
-{
-    default none;
-    div(rhoPhi,U) Gauss linearUpwind grad(U);
-    div(phi,alpha) Gauss vanLeer;
-    div(phirb,alpha) Gauss linear;
-    div((mu*dev2(T(grad(U))))) Gauss linear;
-}
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes { default corrected; }
-DICT
-cat > "$c/system/fvSolution" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
-solvers
-{
-    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
-    p_rgh { solver PCG; preconditioner DIC; tolerance 1e-10; relTol 0; }
-    p_rghFinal { \$p_rgh; }
-    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-10; relTol 0; }
-    UFinal { \$U; }
-}
-PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
-DICT
-cat > "$c/constant/vheProperties" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
-fluids
-{
-    liquid { rho [1 -3 0 0 0 0 0] 1; mu [1 -1 -1 0 0 0 0] $mu; }
-    gas    { rho [1 -3 0 0 0 0 0] 1; mu [1 -1 -1 0 0 0 0] $mu; }
-}
-sigmas ( (liquid gas) [1 0 -2 0 0 0 0] 1 );
-DICT
-cat > "$c/constant/g" <<DICT
-FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
-dimensions [0 1 -2 0 0 0 0]; value (0 0 0);
-DICT
+st_dicts "$c" 1e-10 0 1 $mu 1 $mu 1 0
 cat > "$c/0/U" <<DICT
 FoamFile { version 2.0; format ascii; class volVectorField; object U; }
 dimensions [0 1 -1 0 0 0 0];
@@ -106,8 +67,4 @@ for phase in liquid gas; do
         echo "boundaryField { walls { type zeroGradient; } frontAndBack { type $fa; } }"
     } > "$c/0/alpha.$phase"
 done
-(cd "$c" && blockMesh > log.blockMesh 2>&1) || exit 1
-"$VHE_ROOT/bin/vheToInterFoam" "$c" "$d/interFoam" > /dev/null || exit 1
-(cd "$c" && vheFoam > log.vheFoam 2>&1) &
-(cd "$d/interFoam" && interFoam > log.interFoam 2>&1) &
-wait
+st_run "$d"
