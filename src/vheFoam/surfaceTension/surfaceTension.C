@@ -155,7 +155,7 @@ void Foam::surfaceTension::correctContactAngle
             const scalarField b((b2 - a12*b1)/det);
 
             nk = a*nf + b*nk;
-            nk /= (mag(nk) + deltaN_.value());
+            nk /= (mag(nk) + mixture_.deltaN().value());
 
             acap.gradient() = (nf & nk)*mag(gradAlphaf[patchi]);
             acap.evaluate();
@@ -177,12 +177,7 @@ Foam::surfaceTension::surfaceTension
 :
     mixture_(mixture),
     U_(U),
-    hf_(U.mesh()),
-    deltaN_
-    (
-        "deltaN",
-        1e-8/pow(average(U.mesh().V()), 1.0/3.0)
-    )
+    hf_(U.mesh())
 {
     read();
     if (!active())
@@ -217,7 +212,10 @@ Foam::tmp<Foam::volScalarField> Foam::surfaceTension::K(const pair& p) const
         ajf*fvc::interpolate(fvc::grad(ai, "nHat"))
       - aif*fvc::interpolate(fvc::grad(aj, "nHat"))
     );
-    surfaceVectorField nHatfv(gradAlphaf/(mag(gradAlphaf) + deltaN_));
+    surfaceVectorField nHatfv
+    (
+        gradAlphaf/(mag(gradAlphaf) + mixture_.deltaN())
+    );
     correctContactAngle(p, nHatfv.boundaryFieldRef(), gradAlphaf.boundaryField());
 
     return tmp<volScalarField>::New
