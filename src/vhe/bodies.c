@@ -140,3 +140,93 @@ int vhe_colour_bodies(int n, const double *centre, const double *radius,
     }
     return shared;
 }
+
+void vhe_pose_rotate(double Q[9], const double omega[3], double dt)
+{
+    const double w = sqrt(omega[0] * omega[0] + omega[1] * omega[1]
+                          + omega[2] * omega[2]);
+    const double th = w * dt;
+    double R[9], P[9], n[3];
+    int i, j, k;
+
+    if (!(th != 0.0) || !isfinite(th)) {
+        return;
+    }
+    n[0] = omega[0] / w;
+    n[1] = omega[1] / w;
+    n[2] = omega[2] / w;
+    {
+        const double c = cos(th), s = sin(th), t = 1.0 - c;
+        R[0] = c + t * n[0] * n[0];
+        R[1] = t * n[0] * n[1] - s * n[2];
+        R[2] = t * n[0] * n[2] + s * n[1];
+        R[3] = t * n[1] * n[0] + s * n[2];
+        R[4] = c + t * n[1] * n[1];
+        R[5] = t * n[1] * n[2] - s * n[0];
+        R[6] = t * n[2] * n[0] - s * n[1];
+        R[7] = t * n[2] * n[1] + s * n[0];
+        R[8] = c + t * n[2] * n[2];
+    }
+    for (i = 0; i < 3; ++i) {
+        for (j = 0; j < 3; ++j) {
+            double v = 0.0;
+            for (k = 0; k < 3; ++k) {
+                v += R[3 * i + k] * Q[3 * k + j];
+            }
+            P[3 * i + j] = v;
+        }
+    }
+    /* Gram-Schmidt on the columns: an exact zero stays exactly zero (a 2D
+     * pose turned about the normal keeps its normal row and column). */
+    for (j = 0; j < 3; ++j) {
+        double m = 0.0;
+        for (k = 0; k < j; ++k) {
+            double d = 0.0;
+            for (i = 0; i < 3; ++i) {
+                d += P[3 * i + j] * P[3 * i + k];
+            }
+            for (i = 0; i < 3; ++i) {
+                P[3 * i + j] -= d * P[3 * i + k];
+            }
+        }
+        for (i = 0; i < 3; ++i) {
+            m += P[3 * i + j] * P[3 * i + j];
+        }
+        m = sqrt(m);
+        for (i = 0; i < 3; ++i) {
+            P[3 * i + j] /= m;
+        }
+    }
+    for (i = 0; i < 9; ++i) {
+        Q[i] = P[i];
+    }
+}
+
+void vhe_volume_sums(size_t n, const double *alpha, const double *V,
+                     double sums[2])
+{
+    size_t c;
+    sums[0] = 0.0;
+    sums[1] = 0.0;
+    for (c = 0; c < n; ++c) {
+        sums[0] += alpha[c] * V[c];
+        sums[1] += alpha[c] * (1.0 - alpha[c]) * V[c];
+    }
+}
+
+double vhe_volume_shift(size_t n, double *alpha, const double sums[2],
+                        double target)
+{
+    double s;
+    size_t c;
+    if (!(sums[1] > 0.0)) {
+        return 0.0;
+    }
+    s = (target - sums[0]) / sums[1];
+    s = s > 1.0 ? 1.0 : (s < -1.0 ? -1.0 : s);
+    for (c = 0; c < n; ++c) {
+        const double a = alpha[c] + s * alpha[c] * (1.0 - alpha[c]);
+        alpha[c] = a < 0.0 ? 0.0 : (a > 1.0 ? 1.0 : a);
+    }
+    return s;
+}

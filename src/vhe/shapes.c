@@ -192,8 +192,87 @@ void vhe_shape_bounds(const struct vhe_shape *s, double lo[3], double hi[3])
     }
 }
 
+/* The point of the shape as given that a pose carries to x: centre +
+ * Q^T (x - X); no pose (Q NULL): x itself. */
+static void unpose(const struct vhe_shape *s, const double *Q,
+                   const double *X, const double x[3], double y[3])
+{
+    int i;
+    if (Q == NULL) {
+        y[0] = x[0];
+        y[1] = x[1];
+        y[2] = x[2];
+        return;
+    }
+    for (i = 0; i < 3; ++i) {
+        y[i] = s->centre[i] + Q[i] * (x[0] - X[0]) + Q[3 + i] * (x[1] - X[1])
+               + Q[6 + i] * (x[2] - X[2]);
+    }
+}
+
+static double fraction(const struct vhe_shape *s, const double *Q,
+                       const double *X, const double lo[3],
+                       const double hi[3], int ndim, int max_depth);
+
+double vhe_shape_sdf_posed(const struct vhe_shape *s, const double Q[9],
+                           const double X[3], const double x[3])
+{
+    double y[3];
+    if (Q == NULL || X == NULL) {
+        return HUGE_VAL;
+    }
+    unpose(s, Q, X, x, y);
+    return vhe_shape_sdf(s, y);
+}
+
 double vhe_shape_fraction(const struct vhe_shape *s, const double lo[3],
                           const double hi[3], int ndim, int max_depth)
+{
+    return fraction(s, NULL, NULL, lo, hi, ndim, max_depth);
+}
+
+double vhe_shape_fraction_posed(const struct vhe_shape *s, const double Q[9],
+                                const double X[3], const double lo[3],
+                                const double hi[3], int ndim, int max_depth)
+{
+    if (Q == NULL || X == NULL) {
+        return 0.0;
+    }
+    return fraction(s, Q, X, lo, hi, ndim, max_depth);
+}
+
+void vhe_shape_bounds_posed(const struct vhe_shape *s, const double Q[9],
+                            const double X[3], double lo[3], double hi[3])
+{
+    double e[3];
+    int i, j;
+
+    vhe_shape_bounds(s, lo, hi);
+    if (lo[0] > hi[0] || Q == NULL || X == NULL) {
+        return;   /* an empty box stays empty */
+    }
+    for (j = 0; j < 3; ++j) {
+        e[j] = lo[j] == -HUGE_VAL ? HUGE_VAL : 0.5 * (hi[j] - lo[j]);
+    }
+    /* The box of the turned box: half-extents sum_j |Q_ij| e_j, where an
+     * infinite extent counts only along a direction it is turned into
+     * (a 2D disk turned about its own axis stays infinite along it). */
+    for (i = 0; i < 3; ++i) {
+        double h = 0.0;
+        for (j = 0; j < 3; ++j) {
+            const double q = fabs(Q[3 * i + j]);
+            if (q != 0.0) {
+                h += q * e[j];
+            }
+        }
+        lo[i] = h == HUGE_VAL ? -HUGE_VAL : X[i] - h;
+        hi[i] = h == HUGE_VAL ? HUGE_VAL : X[i] + h;
+    }
+}
+
+static double fraction(const struct vhe_shape *s, const double *Q,
+                       const double *X, const double lo[3],
+                       const double hi[3], int ndim, int max_depth)
 {
     /*
      * Depth-first over sub-boxes with an explicit stack: each split pops one
@@ -244,7 +323,11 @@ double vhe_shape_fraction(const struct vhe_shape *s, const double lo[3],
         }
         /* This sub-box's share of the cell (exact power of two). */
         w = ldexp(1.0, -nd * b.level);
-        sdf = vhe_shape_sdf(s, b.c);
+        {
+            double y[3];
+            unpose(s, Q, X, b.c, y);
+            sdf = vhe_shape_sdf(s, y);   /* a rigid motion keeps distances */
+        }
 
         /* |sdf| bounds the distance from below: the whole box is on one
          * side when the surface is no closer than the half-diagonal. */

@@ -398,6 +398,25 @@ double vhe_shape_fraction(const struct vhe_shape *s, const double lo[3],
 /* Axis-aligned bounding box of the shape; infinite extents are +-HUGE_VAL. */
 void vhe_shape_bounds(const struct vhe_shape *s, double lo[3], double hi[3]);
 
+/*
+ * A shape moved rigidly (a rigid body's pose): its centre carried to X and
+ * the shape turned by the rotation Q (3 x 3, row-major, orthonormal), so
+ * that a point x of the world lies at centre + Q^T (x - X) of the shape as
+ * given.  vhe_shape_fraction_posed: vhe_shape_fraction of the moved shape
+ * (the same sub-cell integration; Q = I, X = centre gives the same value
+ * to the last bit).  vhe_shape_bounds_posed: an axis-aligned box holding
+ * the moved shape (the given shape's box turned; infinite extents stay
+ * infinite along the directions they are turned into).
+ */
+double vhe_shape_fraction_posed(const struct vhe_shape *s, const double Q[9],
+                                const double X[3], const double lo[3],
+                                const double hi[3], int ndim, int max_depth);
+void vhe_shape_bounds_posed(const struct vhe_shape *s, const double Q[9],
+                            const double X[3], double lo[3], double hi[3]);
+/* vhe_shape_sdf of the moved shape at x (a rigid motion keeps distances). */
+double vhe_shape_sdf_posed(const struct vhe_shape *s, const double Q[9],
+                           const double X[3], const double x[3]);
+
 /* -------------------------------------------------------------- packings */
 
 /*
@@ -540,6 +559,29 @@ void vhe_flow_u(const struct vhe_flow *f, const double x[3], double t,
 void vhe_body_omega(const double J[6], const double L[3], int normal,
                     double omega[3]);
 double vhe_body_shape(const double J[6], int normal, double axis[3]);
+
+/*
+ * A rigid body's orientation turned by the angular velocity omega over dt:
+ * Q <- R Q, R the rotation by |omega| dt about omega (Rodrigues, exact for
+ * a constant omega), Q then re-orthonormalised (Gram-Schmidt on its
+ * columns) so that round-off does not grow over millions of steps.
+ */
+void vhe_pose_rotate(double Q[9], const double omega[3], double dt);
+
+/*
+ * A body's fraction fitted to its volume without moving its surface:
+ * vhe_volume_sums gives sums[0] = sum alpha V and sums[1] = sum alpha
+ * (1 - alpha) V (add them over processors); vhe_volume_shift applies
+ * alpha <- alpha + s alpha (1 - alpha), s = (target - sums[0])/sums[1]
+ * clamped to [-1, 1], where the result stays in [0, 1] and cells of
+ * fraction 0 or 1 are left as they are.  Returns the s applied (0 where
+ * sums[1] is 0).  One application fits the volume to round-off unless s
+ * is clamped (a body that cannot reach its volume on this mesh).
+ */
+void vhe_volume_sums(size_t n, const double *alpha, const double *V,
+                     double sums[2]);
+double vhe_volume_shift(size_t n, double *alpha, const double sums[2],
+                        double target);
 
 /*
  * vhe_colour_bodies: colours for n bodies, each given by a centre

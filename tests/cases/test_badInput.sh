@@ -67,9 +67,11 @@ expectFatal hugeG "$d" vheFoam "G of rubber is 1e\+300 Pa, above 1e\+20 Pa" vheP
 d=$(variant rigidWithG); foamDictionary -entry solids/rubber/rigid -add yes "$d/$P" > /dev/null
 expectFatal rigidWithG "$d" vheFoam "G has no meaning for the rigid material rubber" vheProperties
 d=$(variant fixedNotRigid); foamDictionary -entry solids/rubber/motion -add fixed "$d/$P" > /dev/null
-expectFatal fixedNotRigid "$d" vheFoam "motion fixed holds a rigid body in place: set rigid yes for rubber" vheProperties
+expectFatal fixedNotRigid "$d" vheFoam "motion fixed holds a rigid body to a motion: set rigid yes for rubber" vheProperties
 d=$(variant unknownMotion); foamDictionary -entry solids/rubber/motion -add spinning "$d/$P" > /dev/null
-expectFatal unknownMotion "$d" vheFoam "motion of rubber must be free or fixed, got spinning" vheProperties
+expectFatal unknownMotion "$d" vheFoam "motion of rubber must be free, fixed or prescribed, got spinning" vheProperties
+d=$(variant velocityNotPrescribed); foamDictionary -entry solids/rubber/angularVelocity -add "(0 0 1)" "$d/$P" > /dev/null
+expectFatal velocityNotPrescribed "$d" vheFoam "angularVelocity of rubber is a prescribed motion's: set motion prescribed, or remove it" vheProperties
 d=$(variant contactRange); echo "contact { range 3; }" >> "$d/$P"
 expectFatal contactRange "$d" vheFoam "contact \{ range \} must lie in \[1, 2\] cells" vheProperties
 d=$(variant contactStrength); echo "contact { strength -1; }" >> "$d/$P"

@@ -171,6 +171,133 @@ START_TEST(test_colour_bodies)
 }
 END_TEST
 
+
+/* A posed shape at the identity pose is the shape itself, to the bit; a
+ * box turned by 90 degrees about z is the box with its x and y half-edges
+ * swapped; a translation moves the fraction with it. */
+START_TEST(test_shape_posed)
+{
+    struct vhe_shape box = {VHE_BOX, {0.5, 0.5, 0.5}, {0, 0, 1}, 0, 0,
+                            {0.3, 0.1, 1.0}};
+    struct vhe_shape swapped = box;
+    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const double Rz[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+    const double X[3] = {0.5, 0.5, 0.5}, Y[3] = {0.57, 0.43, 0.5};
+    struct vhe_shape moved = box;
+    int i, j;
+    swapped.semi[0] = 0.1;
+    swapped.semi[1] = 0.3;
+    moved.centre[0] = Y[0];
+    moved.centre[1] = Y[1];
+    for (i = 0; i < 20; ++i) {
+        for (j = 0; j < 20; ++j) {
+            const double lo[3] = {i * 0.05, j * 0.05, 0.0};
+            const double hi[3] = {lo[0] + 0.05, lo[1] + 0.05, 1.0};
+            ck_assert(vhe_shape_fraction_posed(&box, I, X, lo, hi, 2, 5)
+                      == vhe_shape_fraction(&box, lo, hi, 2, 5));
+            ck_assert_double_eq_tol(
+                vhe_shape_fraction_posed(&box, Rz, X, lo, hi, 2, 5),
+                vhe_shape_fraction(&swapped, lo, hi, 2, 5), 1e-12);
+            ck_assert_double_eq_tol(
+                vhe_shape_fraction_posed(&box, I, Y, lo, hi, 2, 5),
+                vhe_shape_fraction(&moved, lo, hi, 2, 5), 1e-12);
+        }
+    }
+}
+END_TEST
+
+/* The box of a turned shape holds it; a 2D disk turned about its axis
+ * stays infinite along it and a circle in the plane. */
+START_TEST(test_bounds_posed)
+{
+    const double c = cos(PI / 4), s = sin(PI / 4);
+    const double Q[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
+    const double X[3] = {1.0, 2.0, 0.0};
+    struct vhe_shape box = {VHE_BOX, {0, 0, 0}, {0, 0, 1}, 0, 0,
+                            {0.3, 0.1, 0.05}};
+    struct vhe_shape disk = {VHE_CYLINDER, {0, 0, 0}, {0, 0, 1}, 0.2, 0,
+                             {0, 0, 0}};
+    double lo[3], hi[3];
+    vhe_shape_bounds_posed(&box, Q, X, lo, hi);
+    ck_assert_double_eq_tol(hi[0] - X[0], (0.3 + 0.1) * c, 1e-14);
+    ck_assert_double_eq_tol(X[1] - lo[1], (0.3 + 0.1) * s, 1e-14);
+    ck_assert_double_eq_tol(hi[2], 0.05, 1e-14);
+    {
+        /* the turned box's corner (0.3, 0.1) lies at X + Q (0.3, 0.1) */
+        const double x[3] = {X[0] + c * 0.3 - s * 0.1, X[1] + s * 0.3 + c * 0.1,
+                             0.0};
+        const double y[3] = {X[0] + c * 0.5, X[1] + s * 0.5, 0.0};
+        ck_assert_double_eq_tol(vhe_shape_sdf_posed(&box, Q, X, x), 0.0,
+                                1e-14);
+        ck_assert_double_eq_tol(vhe_shape_sdf_posed(&box, Q, X, y), 0.2,
+                                1e-14);
+    }
+    vhe_shape_bounds_posed(&disk, Q, X, lo, hi);
+    ck_assert_double_eq_tol(hi[0] - X[0], 0.2 * (c + s), 1e-14);
+    ck_assert(lo[2] == -HUGE_VAL && hi[2] == HUGE_VAL);
+}
+END_TEST
+
+/* A quarter turn about z in 1000 steps is the quarter turn; a million
+ * small turns about a skew axis leave Q orthonormal to round-off; a 2D
+ * pose keeps its exact zeros. */
+START_TEST(test_pose_rotate)
+{
+    double Q[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const double wz[3] = {0, 0, 2.0};
+    const double w[3] = {0.3, -1.1, 0.7};
+    int i, j, k;
+    for (i = 0; i < 1000; ++i) {
+        vhe_pose_rotate(Q, wz, PI / 4 / 1000);
+    }
+    ck_assert_double_eq_tol(Q[0], 0.0, 1e-12);
+    ck_assert_double_eq_tol(Q[1], -1.0, 1e-12);
+    ck_assert_double_eq_tol(Q[3], 1.0, 1e-12);
+    ck_assert(Q[2] == 0.0 && Q[5] == 0.0 && Q[6] == 0.0 && Q[7] == 0.0
+              && Q[8] == 1.0);
+    for (i = 0; i < 1000000; ++i) {
+        vhe_pose_rotate(Q, w, 1e-3);
+    }
+    for (i = 0; i < 3; ++i) {
+        for (j = 0; j < 3; ++j) {
+            double d = 0.0;
+            for (k = 0; k < 3; ++k) {
+                d += Q[3 * k + i] * Q[3 * k + j];
+            }
+            ck_assert_double_eq_tol(d, i == j ? 1.0 : 0.0, 1e-14);
+        }
+    }
+}
+END_TEST
+
+/* The fit reaches its target to round-off, keeps fractions in [0, 1] and
+ * leaves cells of 0 and 1 alone; a target out of reach clamps s. */
+START_TEST(test_volume_fit)
+{
+    double a[200], V[200], sums[2], target, s;
+    int c;
+    for (c = 0; c < 200; ++c) {
+        a[c] = c < 50 ? 0.0 : (c < 100 ? 1.0 : 0.5 + 0.49 * sin(c));
+        V[c] = 1.0 + 0.1 * cos(c);
+    }
+    vhe_volume_sums(200, a, V, sums);
+    target = sums[0] * (1 + 3e-3);
+    s = vhe_volume_shift(200, a, sums, target);
+    ck_assert(s > 0 && s < 1);
+    vhe_volume_sums(200, a, V, sums);
+    ck_assert_double_eq_tol(sums[0] / target, 1.0, 1e-14);
+    for (c = 0; c < 200; ++c) {
+        ck_assert(a[c] >= 0.0 && a[c] <= 1.0);
+        if (c < 50) ck_assert(a[c] == 0.0);
+        if (c >= 50 && c < 100) ck_assert(a[c] == 1.0);
+    }
+    ck_assert_double_eq(vhe_volume_shift(200, a, sums, 1e3), 1.0);
+    for (c = 0; c < 200; ++c) {
+        ck_assert(a[c] >= 0.0 && a[c] <= 1.0);
+    }
+}
+END_TEST
+
 Suite *bodies_suite(void)
 {
     Suite *s = suite_create("bodies");
@@ -181,6 +308,10 @@ Suite *bodies_suite(void)
     tcase_add_test(tc, test_shape_3d);
     tcase_add_test(tc, test_devb_mag);
     tcase_add_test(tc, test_colour_bodies);
+    tcase_add_test(tc, test_shape_posed);
+    tcase_add_test(tc, test_bounds_posed);
+    tcase_add_test(tc, test_pose_rotate);
+    tcase_add_test(tc, test_volume_fit);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -56,6 +56,7 @@ Description
 #include "cyclicPolyPatch.H"
 #include "vheElasticity.H"
 #include "vhe.h"
+#include "bodyShapes.H"
 
 using namespace Foam;
 
@@ -73,98 +74,6 @@ struct body
 static void setVec(double d[3], const vector& v)
 {
     d[0] = v.x(); d[1] = v.y(); d[2] = v.z();
-}
-
-
-// The shape of one body entry (not a packing)
-static vhe_shape readShape
-(
-    const dictionary& dict,
-    const label nDim
-)
-{
-    vhe_shape s{};
-    s.axis[2] = 1;
-
-    const word shape(dict.get<word>("shape"));
-    if (shape == "sphere")
-    {
-        s.kind = VHE_SPHERE;
-        setVec(s.centre, dict.get<vector>("centre"));
-        s.radius = dict.get<scalar>("radius");
-    }
-    else if (shape == "cylinder" || shape == "disk")
-    {
-        s.kind = VHE_CYLINDER;
-        setVec(s.centre, dict.get<vector>("centre"));
-        s.radius = dict.get<scalar>("radius");
-        vector ax(dict.getOrDefault<vector>("axis", vector(0, 0, 1)));
-        if (mag(ax) < SMALL)
-        {
-            FatalIOErrorInFunction(dict)
-                << "axis of body " << dict.dictName() << " is zero"
-                << exit(FatalIOError);
-        }
-        ax /= mag(ax);
-        setVec(s.axis, ax);
-        s.half_length = 0.5*dict.getOrDefault<scalar>("length", 0);
-        if (nDim == 2 && (mag(ax.z()) < 1 - 1e-12 || s.half_length > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "In a 2D case (z empty) a cylinder must be a disk: axis"
-                << " (0 0 1) and no length; body " << dict.dictName()
-                << " has axis " << ax << exit(FatalIOError);
-        }
-    }
-    else if (shape == "box")
-    {
-        s.kind = VHE_BOX;
-        const vector lo(dict.get<vector>("min")), hi(dict.get<vector>("max"));
-        if (cmptMin(hi - lo) <= 0 && nDim == 3)
-        {
-            FatalIOErrorInFunction(dict)
-                << "box " << dict.dictName() << " has max <= min"
-                << exit(FatalIOError);
-        }
-        setVec(s.centre, 0.5*(lo + hi));
-        setVec(s.semi, 0.5*(hi - lo));
-        if (nDim == 2) s.semi[2] = GREAT;
-    }
-    else if (shape == "ellipsoid")
-    {
-        s.kind = VHE_ELLIPSOID;
-        setVec(s.centre, dict.get<vector>("centre"));
-        const vector a(dict.get<vector>("semiAxes"));
-        setVec(s.semi, a);
-        if (cmptMin(a) <= 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "semiAxes of " << dict.dictName() << " must be positive"
-                << exit(FatalIOError);
-        }
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown shape '" << shape << "' for body " << dict.dictName()
-            << nl << "    Valid shapes: (sphere cylinder box ellipsoid)"
-            << exit(FatalIOError);
-    }
-
-    if ((s.kind == VHE_SPHERE || s.kind == VHE_CYLINDER) && s.radius <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "radius of " << dict.dictName() << " must be positive"
-            << exit(FatalIOError);
-    }
-    if (nDim == 2 && (s.kind == VHE_SPHERE || s.kind == VHE_ELLIPSOID))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Body " << dict.dictName() << " is a 3D shape (" << shape
-            << ") but the case is 2D (z empty): use shape cylinder (a disk)"
-            << " or box" << exit(FatalIOError);
-    }
-    return s;
 }
 
 
@@ -215,27 +124,18 @@ int main(int argc, char *argv[])
     {
         FatalErrorInFunction << "1D cases are not supported" << exit(FatalError);
     }
-    const boundBox bb(mesh.points(), true);
+    const label maxDepth = bodiesDict.getOrDefault<label>("maxDepth", 5);
+    const bodyShapes shapes(mesh, maxDepth);
+    const boundBox& bb = shapes.bounds();
     double lo[3], hi[3];
     setVec(lo, bb.min());
     setVec(hi, bb.max());
-    int periodic[3] = {0, 0, 0};
-    for (const polyPatch& pp : mesh.boundaryMesh())
-    {
-        if (isA<cyclicPolyPatch>(pp))
-        {
-            const vector s = cmptMag(gSum(pp.faceAreas()));
-            periodic[findMax(List<scalar>({s.x(), s.y(), s.z()}))] = 1;
-        }
-    }
-    reduce(periodic[0], maxOp<int>());
-    reduce(periodic[1], maxOp<int>());
-    reduce(periodic[2], maxOp<int>());
+    int periodic[3] =
+        {int(shapes.periodic()[0]), int(shapes.periodic()[1]),
+         int(shapes.periodic()[2])};
     Info<< "Mesh: " << nDim << "D, bounds " << bb << ", periodic in"
         << (periodic[0] ? " x" : "") << (periodic[1] ? " y" : "")
         << (periodic[2] ? " z" : "") << nl << endl;
-
-    const label maxDepth = bodiesDict.getOrDefault<label>("maxDepth", 5);
 
     // ---- Read every body (all checks before anything is written)
     DynamicList<body> bodies;
@@ -359,7 +259,7 @@ int main(int argc, char *argv[])
             bd.name = e.keyword();
             bd.material = m;
             bd.colour = 0;
-            bd.shape = readShape(d, nDim);
+            bd.shape = bodyShapes::readSetBodies(d, nDim);
             bodies.append(bd);
         }
     }
@@ -467,59 +367,21 @@ int main(int argc, char *argv[])
     const label nCells = mesh.nCells();
     List<scalarField> solid(nPhases, scalarField(nCells, 0));
     scalarField phis(nCells, 0);
-    // Cell bounding boxes, once for all bodies and images
-    List<boundBox> cellBox(nCells);
-    {
-        const pointField& pts = mesh.points();
-        const labelListList& cellPts = mesh.cellPoints();
-        forAll(cellBox, c)
-        {
-            cellBox[c] = boundBox(pts, cellPts[c], false);
-        }
-    }
-
+    dictionary rigidState;
     for (const body& b : bodies)
     {
-        // The body and its periodic images that reach into the mesh
-        DynamicList<vhe_shape> images(1, b.shape);
-        for (int k = 0; k < 3; ++k)
-        {
-            if (!periodic[k]) continue;
-            const label n = images.size();
-            for (label i = 0; i < n; ++i)
-            {
-                for (const scalar shift : {-1.0, 1.0})
-                {
-                    vhe_shape s = images[i];
-                    s.centre[k] += shift*(hi[k] - lo[k]);
-                    images.append(s);
-                }
-            }
-        }
-
+        // The body and its periodic images, drawn as the rigid bodies
+        // redraw it when it moves (bodyShapes)
+        DynamicList<label> cells;
+        DynamicList<scalar> fraction;
+        shapes.draw(b.shape, cells, fraction);
         scalar placed = 0;
-        for (const vhe_shape& s : images)
+        forAll(cells, i)
         {
-            double slo[3], shi[3];
-            vhe_shape_bounds(&s, slo, shi);
-            for (label c = 0; c < nCells; ++c)
-            {
-                const boundBox& cb = cellBox[c];
-                double clo[3], chi[3];
-                setVec(clo, cb.min());
-                setVec(chi, cb.max());
-                bool overlap = true;
-                for (int k = 0; k < nDim; ++k)
-                {
-                    overlap = overlap && clo[k] < shi[k] && chi[k] > slo[k];
-                }
-                if (!overlap) continue;
-                const scalar f =
-                    vhe_shape_fraction(&s, clo, chi, nDim, maxDepth);
-                solid[offset[b.material] + b.colour][c] += f;
-                phis[c] += f;
-                placed += f*mesh.V()[c];
-            }
+            const label c = cells[i];
+            solid[offset[b.material] + b.colour][c] += fraction[i];
+            phis[c] += fraction[i];
+            placed += fraction[i]*mesh.V()[c];
         }
         reduce(placed, sumOp<scalar>());
         double volume = vhe_shape_volume(&b.shape);
@@ -530,6 +392,25 @@ int main(int argc, char *argv[])
         Info<< "Body " << b.name << " (" << solidNames[b.material]
             << ", colour " << b.colour
             << "): volume " << volume << ", on the mesh " << placed << nl;
+
+        // A rigid body's shape, pose and volume on this mesh: the solver
+        // carries the shape with the body's rigid motion and redraws it
+        // every step (rigidPoses)
+        const dictionary& sd =
+            props.subDict("solids").subDict(solidNames[b.material]);
+        if (sd.getOrDefault<Switch>("rigid", false))
+        {
+            const unsigned precision = IOstream::defaultPrecision(17);
+            dictionary bd;
+            bd.add("material", solidNames[b.material]);
+            bd.add("colour", b.colour);
+            bd.add("shape", bodyShapes::write(b.shape));
+            bd.add("volume", placed);
+            bd.add("centre", bodyShapes::centre(b.shape));
+            bd.add("orientation", tensor::I);
+            rigidState.add(b.name, bd);
+            IOstream::defaultPrecision(precision);
+        }
     }
 
     const scalar maxPhis = gMax(phis);
@@ -652,6 +533,25 @@ int main(int argc, char *argv[])
     for (const volScalarField& a : solidAlphas) { Info<< ' ' << a.name(); a.write(); }
     Info<< ' ' << Bstar->name() << nl;
     Bstar->write();
+    if (rigidState.size())
+    {
+        // <time>/uniform/rigidBodies, as the solver writes it
+        IOdictionary state
+        (
+            IOobject
+            (
+                "rigidBodies", runTime.timeName(), "uniform", mesh,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            )
+        );
+        state.add("bodies", rigidState);
+        Info<< "Writing " << state.objectPath() << nl;
+        state.writeObject
+        (
+            IOstream::ASCII, IOstream::currentVersion,
+            IOstream::UNCOMPRESSED, true
+        );
+    }
 
     Info<< "\nEnd\n" << endl;
     return 0;

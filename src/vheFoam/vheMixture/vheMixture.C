@@ -14,7 +14,12 @@
 void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
 {
     const wordList allowed =
-        solid ? wordList({"rho", "mu", "nu", "G", "rigid", "motion", "colours"})
+        solid
+      ? wordList
+        ({
+            "rho", "mu", "nu", "G", "rigid", "motion", "velocity",
+            "angularVelocity", "colours"
+        })
               : wordList({"rho", "mu", "nu"});
 
     for (const entry& e : dict)
@@ -90,22 +95,35 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
                 << ": remove it, or set rigid no" << exit(FatalIOError);
         }
 
-        // A rigid material's bodies move freely (motion free) or are held
+        // A rigid material's bodies move freely (motion free), are held
         // in place (motion fixed: obstacles, a fixed bed, an array of
-        // cylinders); a fixed body's fraction is its initial one for good
+        // cylinders; a fixed body's fraction is its initial one for good)
+        // or move as told (motion prescribed: stirrers, paddles, moving
+        // walls; velocity and angularVelocity, Function1s of time, read
+        // by rigidBodies)
         const word motion =
             solid ? pd.getOrDefault<word>("motion", "free") : word("free");
-        if (motion != "free" && motion != "fixed")
+        if (motion != "free" && motion != "fixed" && motion != "prescribed")
         {
             FatalIOErrorInFunction(pd)
-                << "motion of " << name << " must be free or fixed, got "
-                << motion << exit(FatalIOError);
+                << "motion of " << name << " must be free, fixed or"
+                << " prescribed, got " << motion << exit(FatalIOError);
         }
-        if (motion == "fixed" && !rigid)
+        if (motion != "free" && !rigid)
         {
             FatalIOErrorInFunction(pd)
-                << "motion fixed holds a rigid body in place: set rigid yes"
-                << " for " << name << exit(FatalIOError);
+                << "motion " << motion << " holds a rigid body to a motion:"
+                << " set rigid yes for " << name << exit(FatalIOError);
+        }
+        for (const word& k : {"velocity", "angularVelocity"})
+        {
+            if (pd.found(k) && motion != "prescribed")
+            {
+                FatalIOErrorInFunction(pd)
+                    << k << " of " << name << " is a prescribed motion's:"
+                    << " set motion prescribed, or remove it"
+                    << exit(FatalIOError);
+            }
         }
 
         scalar G = 0;
@@ -170,6 +188,7 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
             p.solid = solid;
             p.rigid = rigid;
             p.fixed = motion == "fixed";
+            p.prescribed = motion == "prescribed";
             p.rho = rho.value();
             p.mu = hasMu ? visc : visc*rho.value();
             p.G = G;
@@ -389,6 +408,7 @@ Foam::vheMixture::vheMixture
     {
         Info<< ' ' << p.name
             << (p.fixed ? " (fixed rigid solid"
+              : p.prescribed ? " (prescribed rigid solid"
               : p.rigid ? " (rigid solid" : p.solid ? " (solid" : " (fluid")
             << ", rho " << p.rho << ", mu " << p.mu;
         if (p.solid && !p.rigid) Info<< ", G " << p.G;

@@ -456,33 +456,76 @@ void Foam::vheMixture::holdFixed()
     // the fluids of its cells share the rest in their proportions.  The
     // fluids' volume changes by what the transport moved across the edge
     // (benchmarks/rigid reports it)
-    label firstFluid = 0;
-    while (phases_[firstFluid].solid) ++firstFluid;
+    DynamicList<label> held;
+    DynamicList<scalarField> values;
     forAll(fixedAlphas_, i)
     {
         if (!fixedAlphas_.set(i)) continue;
-        scalarField& a = alphas_[i].primitiveFieldRef();
-        const scalarField& a0 = fixedAlphas_[i].primitiveField();
-        scalarField rest(a.size(), 0);
-        forAll(alphas_, j)
+        held.append(i);
+        values.append(fixedAlphas_[i].primitiveField());
+    }
+    if (held.size()) hold(held, values);
+}
+
+
+void Foam::vheMixture::addToOldDensity(const scalarField& dRho)
+{
+    // Without an old time yet, ddt takes the current density as old
+    if (rho_.nOldTimes() == 0) return;
+    rho_.oldTime().primitiveFieldRef() += dRho;
+}
+
+
+void Foam::vheMixture::hold
+(
+    const labelList& held,
+    const UList<scalarField>& values
+)
+{
+    label firstFluid = 0;
+    while (phases_[firstFluid].solid) ++firstFluid;
+    const label nCells = mesh_.nCells();
+
+    // The held phases' sum, scaled to 1 where they overlap, and the cells
+    // where any of them changes
+    scalarField sumHeld(nCells, Zero);
+    boolList changed(nCells, false);
+    forAll(held, k)
+    {
+        const scalarField& a = alphas_[held[k]].primitiveField();
+        const scalarField& v = values[k];
+        forAll(v, c)
         {
-            if (j != i) rest += alphas_[j].primitiveField();
+            sumHeld[c] += v[c];
+            changed[c] = changed[c] || a[c] != v[c];
         }
-        forAll(alphas_, j)
+    }
+    scalarField rest(nCells, Zero);
+    forAll(alphas_, j)
+    {
+        if (!held.found(j)) rest += alphas_[j].primitiveField();
+    }
+    forAll(alphas_, j)
+    {
+        scalarField& aj = alphas_[j].primitiveFieldRef();
+        const label k = held.find(j);
+        forAll(aj, c)
         {
-            if (j == i) continue;
-            scalarField& aj = alphas_[j].primitiveFieldRef();
-            forAll(aj, c)
+            if (!changed[c]) continue;
+            const scalar s = max(sumHeld[c], scalar(1));
+            if (k >= 0)
             {
-                if (a[c] == a0[c]) continue;
-                aj[c] = rest[c] > SMALL
-                  ? aj[c]*(1 - a0[c])/rest[c]
-                  : (j == firstFluid ? 1 - a0[c] : 0);
+                aj[c] = values[k][c]/s;
             }
-            alphas_[j].correctBoundaryConditions();
+            else
+            {
+                const scalar free = 1 - sumHeld[c]/s;
+                aj[c] = rest[c] > SMALL
+                  ? aj[c]*free/rest[c]
+                  : (j == firstFluid ? free : 0);
+            }
         }
-        a = a0;
-        alphas_[i].correctBoundaryConditions();
+        alphas_[j].correctBoundaryConditions();
     }
 }
 
