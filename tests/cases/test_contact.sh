@@ -6,11 +6,12 @@
 #  - with contact { strength 0.5; } (the tutorial's; off by default):
 #    the run ends,
 #    5 bodies at every write (colours), the smallest gap above a cell
-#    (measured 1.49 cells), the log reports bodies in contact;
-#  - with contact off the same bodies close in to below 0.6 of that gap
-#    (measured 0.76 cell: the liquid between them, held by both bodies'
-#    no-slip inside the momentum solve, drains slowly, but drains), so
-#    the test can fail.
+#    (measured 1.13 cells), the log reports bodies in contact;
+#  - with contact off the same bodies, drawn from their shapes, still
+#    keep a cell apart surface to surface (rigidPoses; measured 0.95 cell,
+#    1.13 with contact; 0.76 when they were carried by the phase
+#    transport and the liquid between them drained), but less far than
+#    with contact.
 . "$(dirname "$0")/lib.sh"
 
 dat=postProcessing/bodies/0/bodies.dat
@@ -38,6 +39,6 @@ check contactActive "$nc > 0" "$nc steps with bodies in contact"
 
 run "$WORK/off" vheFoam || fail offRun "$WORK/off/log.vheFoam"
 goff=$(smallest "$WORK/off/$dat")
-check contactNeeded "$goff < 0.6*$gmin" \
-    "without contact the smallest gap is $goff m, with it $gmin m"
+check apartWithout "$goff > 0.8/80 and $goff < $gmin" \
+    "without contact the smallest gap is $goff m, with it $gmin m (cell 0.0125 m)"
 finish

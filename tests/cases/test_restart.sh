@@ -29,8 +29,12 @@ for f in U Bstar alpha.rubber; do
     check "restart_$f" "$d <= 1e-12*$m" "max |$f continuous - restarted| = $d at t = 0.6 (scale $m)"
 done
 
-# Rigid disks: their poses (<time>/uniform/rigidBodies, 17 digits) carry
-# on too, so the restarted run draws them where the continuous one does
+# Rigid disks: their poses and the fixed point's history
+# (<time>/uniform/rigidBodies, 17 digits) carry on too, so the restarted
+# run draws and holds them as the continuous one does.  The first step
+# after the restart differs by round-off (8.5e-14 of the scale in U) and
+# the bodies' fixed point carries it on: 1.1e-11 at t = 0.6, so the bound
+# is 1e-10 (without the history kept: 2.6e-6)
 rcont="$WORK/rigidContinuous" rrest="$WORK/rigidRestarted"
 channelCase "$rcont" cells=32 nDisks=6 rigid=yes endTime=0.6 \
     writeInterval=0.3 || { fail setupRigid blockMesh; finish; }
@@ -45,6 +49,6 @@ foamDictionary -entry endTime -set 0.6 "$rrest/system/parameters" > /dev/null
 run "$rrest" vheFoam || fail rigidSecondPart "$rrest/log.vheFoam"
 for f in U alpha.rubber; do
     read -r d m <<< "$(maxFieldDiff "$rcont" "$rrest" 0.6 "$f")"
-    check "restartRigid_$f" "$d <= 1e-12*$m" "rigid disks: max |$f continuous - restarted| = $d at t = 0.6 (scale $m)"
+    check "restartRigid_$f" "$d <= 1e-10*$m" "rigid disks: max |$f continuous - restarted| = $d at t = 0.6 (scale $m)"
 done
 finish

@@ -236,6 +236,9 @@ vhe_shape Foam::bodyShapes::readSetBodies
 Foam::vector Foam::bodyShapes::nearestImage(const vector& d) const
 {
     vector r(d);
+    // 2D: no distance along the empty direction (a body's centre may lie
+    // anywhere in it, the cells at its middle)
+    if (nDim_ == 2) r.z() = 0;
     for (direction k = 0; k < 3; ++k)
     {
         if (!periodic_[k]) continue;
