@@ -65,6 +65,19 @@ void Foam::bodyShapes::updateBoxes() const
     {
         cellBox_[c] = boundBox(pts, cellPts[c], false);
     }
+    treeBoundBox overall(bounds_);
+    overall.inflate(1e-4);
+    tree_.reset
+    (
+        new indexedOctree<treeDataCell>
+        (
+            treeDataCell(true, mesh_, polyMesh::CELL_TETS),
+            overall,
+            8,      // maxLevel
+            10,     // leafsize
+            5.0     // duplicity
+        )
+    );
     boxTimeIndex_ = timeIndex;
 }
 
@@ -105,7 +118,24 @@ void Foam::bodyShapes::draw
         double x[3], slo[3], shi[3];
         setVec(x, Y);
         vhe_shape_bounds_posed(&s, q, x, slo, shi);
-        forAll(cellBox_, c)
+
+        // The cells whose boxes meet the shape's (the mesh's octree; the
+        // box clipped to the mesh: a 2D disk is infinite along z)
+        point qlo, qhi;
+        bool inside = true;
+        for (direction k = 0; k < 3; ++k)
+        {
+            const scalar pad = 1e-9*bounds_.mag();
+            qlo[k] = max(slo[k], bounds_.min()[k] - pad);
+            qhi[k] = min(shi[k], bounds_.max()[k] + pad);
+            inside = inside && qlo[k] <= qhi[k];
+        }
+        if (!inside) continue;
+        const labelList near
+        (
+            tree_->findBox(treeBoundBox(qlo, qhi))
+        );
+        for (const label c : near)
         {
             const boundBox& cb = cellBox_[c];
             double clo[3], chi[3];
