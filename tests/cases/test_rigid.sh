@@ -66,4 +66,36 @@ check floatingDraft "abs($draft - $exact) < 0.005*0.1" \
     "draft $draft m, Archimedes $exact m (height 0.1 m)"
 drift=$(python3 "$TESTS_DIR/floating.py" volumes "$fl")
 check floatingVolumes "$drift < 1e-6" "largest relative phase volume drift $drift"
+
+# A free disk (r 2 mm, rho 1500) dropped in water onto a fixed one (r 3 mm,
+# motion fixed, just off its axis), both placed by setBodies (the tank of
+# benchmarks/rigid/tank.sh, 40 x 80 cells of 0.5 mm, no contact force):
+# the free disk lands on the fixed one and rolls off it, its surface never
+# nearer the fixed one's than 0.8 cell (the drawn bodies' contact keeps
+# one cell; measured 1.0 cell).
+. "$VHE_ROOT/benchmarks/rigid/tank.sh"
+ob="$WORK/obstacle"
+tankCase "$ob" 0.02 0.04 40 80 1500 0.4 0.002 \
+    "falling { material wood; shape disk; centre (0.0102 0.03 0); radius 0.002; }
+     rock { material rock; shape disk; centre (0.01 0.012 0); radius 0.003; }" \
+    || { fail setupObstacle "$ob"; finish; }
+python3 - "$ob/constant/vheProperties" <<'PY2' || { fail setupObstacle "$ob"; finish; }
+import sys
+p = sys.argv[1]
+s = open(p).read()
+old = 'rigid yes; }\n}'
+if old not in s or 'contact { strength 0.5; }' not in s:
+    sys.exit(p + ': no wood material or contact entry to change')
+s = s.replace(old, 'rigid yes; }\n    rock { rho [1 -3 0 0 0 0 0] 1000; '
+              'nu [0 2 -1 0 0 0 0] 1e-6; rigid yes; motion fixed; }\n}', 1)
+s = s.replace('contact { strength 0.5; }', 'contact { strength 0; }')
+open(p, 'w').write(s)
+PY2
+(run "$ob" setFields && run "$ob" setBodies) || { fail setupObstacle "$ob"; finish; }
+run "$ob" vheFoam || fail obstacleRun "$ob/log.vheFoam"
+read -r gmin xend <<< "$(awk '!/^#/ {dx = $3 - 0.01; dy = $4 - 0.012
+        g = sqrt(dx*dx + dy*dy) - 0.005; if (m == "" || g < m) m = g; x = $3}
+    END {printf "%.4e %.5f\n", m, x}' "$ob/postProcessing/rigidBodies/0/poses.dat")"
+check obstacleGap "$gmin > 0.8*0.0005" "smallest surface gap to the fixed disk $gmin m (cell 5e-4 m)"
+check obstacleRollsOff "$xend > 0.0115" "the free disk's centre at x = $xend m at t = 0.4 (released at 0.0102)"
 finish

@@ -40,7 +40,8 @@ Foam::rigidPoses::rigidPoses
         )
     ),
     velocityKnown_(false),
-    stepIndex_(-1)
+    stepIndex_(-1),
+    obstacleIndex_(-1)
 {
     const fvMesh& mesh = mixture.rho().mesh();
     const List<vheMixture::phase>& phases = mixture.phases();
@@ -69,7 +70,24 @@ Foam::rigidPoses::rigidPoses
                 b.phase = i;
             }
         }
-        if (b.phase < 0) continue;      // fixed, or no longer rigid
+        if (b.phase < 0)
+        {
+            // A fixed body: an obstacle to the free ones
+            forAll(phases, i)
+            {
+                if (phases[i].material == b.material && phases[i].fixed)
+                {
+                    b.phase = i;
+                    b.shape = bodyShapes::read(d.subDict("shape"));
+                    b.volume = d.get<scalar>("volume");
+                    b.X = d.get<vector>("centre");
+                    b.Q = d.get<tensor>("orientation");
+                    obstacles_.append(b);
+                    break;
+                }
+            }
+            continue;
+        }
         b.shape = bodyShapes::read(d.subDict("shape"));
         b.volume = d.get<scalar>("volume");
         b.X = d.get<vector>("centre");
@@ -147,6 +165,32 @@ Foam::rigidPoses::rigidPoses
         state_.writeOpt() = IOobject::AUTO_WRITE;
         Info<< "Rigid bodies: " << bodies_.size() << " carried with their"
             << " shapes (" << state_.objectPath() << ")" << nl << endl;
+    }
+}
+
+
+void Foam::rigidPoses::drawObstacles()
+{
+    const fvMesh& mesh = mixture_.rho().mesh();
+    if
+    (
+        obstacleIndex_ >= 0
+     && (obstacleIndex_ == mesh.time().timeIndex() || !mesh.changing())
+    )
+    {
+        return;
+    }
+    obstacleIndex_ = mesh.time().timeIndex();
+    obstacleCells_.setSize(obstacles_.size());
+    forAll(obstacles_, o)
+    {
+        DynamicList<scalar> frac;
+        obstacleCells_[o].clear();
+        shapes_.draw
+        (
+            obstacles_[o].shape, obstacles_[o].Q, obstacles_[o].X,
+            obstacleCells_[o], frac
+        );
     }
 }
 
@@ -279,7 +323,9 @@ void Foam::rigidPoses::move(vheMixture& mixture)
         bd.phase = pick;
     }
 
-    // No body comes nearer another or a wall than half a cell
+    // No body comes nearer another, a fixed body or a wall than half a
+    // cell
+    drawObstacles();
     separate();
     forAll(bodies_, b) draw(b);
 
@@ -306,15 +352,15 @@ Foam::scalar Foam::rigidPoses::mass(const label b) const
 
 Foam::scalar Foam::rigidPoses::gap
 (
-    const label a,
-    const label b,
+    const body& A,
+    const DynamicList<label>& cellsA,
+    const body& B,
+    const DynamicList<label>& cellsB,
     const scalar h,
     vector& n
 ) const
 {
     const vectorField& C = mixture_.rho().mesh().C();
-    const body& A = bodies_[a];
-    const body& B = bodies_[b];
     const std::function<scalar(const vector&)> fa = [&](const vector& x)
     {
         return shapes_.sdf(A.shape, A.Q, A.X, x);
@@ -343,9 +389,9 @@ Foam::scalar Foam::rigidPoses::gap
     // other processors' places stay at -GREAT)
     scalar g = GREAT;
     vector x0(vector::uniform(-GREAT));
-    for (const label i : {a, b})
+    for (const DynamicList<label>* cells : {&cellsA, &cellsB})
     {
-        for (const label c : cells_[i])
+        for (const label c : *cells)
         {
             const scalar v = max(fa(C[c]), fb(C[c]));
             if (v < g)
@@ -423,7 +469,11 @@ void Foam::rigidPoses::separate()
                 const scalar ma = mass(a), mb = mass(b);
                 if (ma >= GREAT && mb >= GREAT) continue;
                 vector nab;
-                const scalar g = gap(a, b, min(h[a], h[b]), nab);
+                const scalar g = gap
+                (
+                    bodies_[a], cells_[a], bodies_[b], cells_[b],
+                    min(h[a], h[b]), nab
+                );
                 if (g >= margin) continue;
                 const scalar wa = ma >= GREAT ? 0 : mb >= GREAT ? 1 : mb/(ma + mb);
                 push = max(push, (margin - g)/margin);
@@ -434,6 +484,45 @@ void Foam::rigidPoses::separate()
             }
         }
         if (!moved) break;
+    }
+
+    // The fixed bodies placed by setBodies: obstacles that do not move
+    forAll(obstacles_, o)
+    {
+        const body& O = obstacles_[o];
+        scalar Ro = 0, ho = GREAT;
+        {
+            double lo[3], hi[3];
+            vhe_shape_bounds(&O.shape, lo, hi);
+            for (label k = 0; k < shapes_.nDim(); ++k)
+            {
+                Ro += sqr(0.5*(hi[k] - lo[k]));
+            }
+            Ro = Foam::sqrt(Ro);
+            for (const label c : obstacleCells_[o])
+            {
+                ho = min(ho, shapes_.cellSize(c));
+            }
+            reduce(ho, minOp<scalar>());
+        }
+        forAll(bodies_, a)
+        {
+            if (h[a] >= GREAT || ho >= GREAT || mass(a) >= GREAT) continue;
+            const scalar margin = 0.5*(h[a] + ho);
+            const scalar dist =
+                mag(shapes_.nearestImage(O.X - bodies_[a].X));
+            if (dist > R[a] + Ro + margin) continue;
+            vector nao;
+            const scalar g = gap
+            (
+                bodies_[a], cells_[a], O, obstacleCells_[o],
+                min(h[a], ho), nao
+            );
+            if (g >= margin) continue;
+            push = max(push, (margin - g)/margin);
+            bodies_[a].X -= (margin - g)*nao;
+            contacts_.append({a, -1, nao});
+        }
     }
 
     // Walls: the faces of the mesh's boundary that are neither coupled nor
