@@ -20,7 +20,7 @@ Description
             radius      0.2;    // sphere, cylinder
             axis        (0 0 1);// cylinder (default z)
             length      0.1;    // cylinder; omitted: infinite (a 2D disk)
-            semiAxes    (a b c);// ellipsoid (axis aligned)
+            semiAxes    (a b c);// ellipsoid (axis aligned; 2D: an ellipse)
             min (x y z); max (x y z);   // box
         }
         suspension              // a packing of equal spheres or disks
@@ -44,8 +44,8 @@ Description
     bounding spheres come within four cells of each other take different
     colours where the colours allow, so that they never merge.
 
-    In a 2D case (z empty) bodies are disks (cylinders along z, infinite)
-    or boxes; packings make disks.  Periodic (cyclic) directions are found
+    In a 2D case (z empty) bodies are disks (cylinders along z, infinite),
+    boxes or ellipses (ellipsoids, infinite along z); packings make disks.  Periodic (cyclic) directions are found
     from the mesh: bodies may cross them and are wrapped.  Every check is
     made before anything is written.  Runs on a decomposed case with
     -parallel.
@@ -388,6 +388,11 @@ int main(int argc, char *argv[])
         if (nDim == 2 && b.shape.kind == VHE_CYLINDER)
         {
             volume *= bb.span().z();     // area times the mesh depth
+        }
+        if (nDim == 2 && b.shape.kind == VHE_ELLIPSOID)
+        {
+            volume = constant::mathematical::pi*b.shape.semi[0]
+               *b.shape.semi[1]*bb.span().z();
         }
         Info<< "Body " << b.name << " (" << solidNames[b.material]
             << ", colour " << b.colour

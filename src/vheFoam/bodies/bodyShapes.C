@@ -237,6 +237,8 @@ vhe_shape Foam::bodyShapes::readSetBodies
                 << "semiAxes of " << dict.dictName() << " must be positive"
                 << exit(FatalIOError);
         }
+        // 2D: an ellipse (an elliptic cylinder along the empty z)
+        if (nDim == 2) s.semi[2] = GREAT;
     }
     else
     {
@@ -252,12 +254,12 @@ vhe_shape Foam::bodyShapes::readSetBodies
             << "radius of " << dict.dictName() << " must be positive"
             << exit(FatalIOError);
     }
-    if (nDim == 2 && (s.kind == VHE_SPHERE || s.kind == VHE_ELLIPSOID))
+    if (nDim == 2 && s.kind == VHE_SPHERE)
     {
         FatalIOErrorInFunction(dict)
             << "Body " << dict.dictName() << " is a 3D shape (" << shape
-            << ") but the case is 2D (z empty): use shape cylinder (a disk)"
-            << " or box" << exit(FatalIOError);
+            << ") but the case is 2D (z empty): use shape cylinder (a disk),"
+            << " box or ellipsoid (an ellipse)" << exit(FatalIOError);
     }
     return s;
 }
