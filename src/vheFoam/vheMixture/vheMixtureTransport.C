@@ -500,10 +500,15 @@ void Foam::vheMixture::hold
             changed[c] = changed[c] || a[c] != v[c];
         }
     }
+    // The other phases' shares from their non-negative parts: MULES leaves
+    // fractions of -1e-10 and the like, and a share of a sum of such
+    // values (water 1e-10, air -1e-10 + 1e-14) was 1e4 times the rest, so
+    // that a cell a drawn body left took 2e4 of water and -2e4 of air.
+    // Where they hold almost nothing (1e-9), the first fluid fills it
     scalarField rest(nCells, Zero);
     forAll(alphas_, j)
     {
-        if (!held.found(j)) rest += alphas_[j].primitiveField();
+        if (!held.found(j)) rest += max(alphas_[j].primitiveField(), scalar(0));
     }
     forAll(alphas_, j)
     {
@@ -520,8 +525,8 @@ void Foam::vheMixture::hold
             else
             {
                 const scalar free = 1 - sumHeld[c]/s;
-                aj[c] = rest[c] > SMALL
-                  ? aj[c]*free/rest[c]
+                aj[c] = rest[c] > 1e-9
+                  ? max(aj[c], scalar(0))*free/rest[c]
                   : (j == firstFluid ? free : 0);
             }
         }
