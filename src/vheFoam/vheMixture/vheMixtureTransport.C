@@ -510,6 +510,19 @@ void Foam::vheMixture::hold
     {
         if (!held.found(j)) rest += max(alphas_[j].primitiveField(), scalar(0));
     }
+
+    // The fluids' volumes before: each but the last is kept (below)
+    const scalarField& V = mesh_.V();
+    DynamicList<label> fluids;
+    forAll(phases_, j)
+    {
+        if (!phases_[j].solid && !held.found(j)) fluids.append(j);
+    }
+    scalarList V0(fluids.size(), Zero);
+    forAll(fluids, f)
+    {
+        V0[f] = gSum(alphas_[fluids[f]].primitiveField()*V);
+    }
     forAll(alphas_, j)
     {
         scalarField& aj = alphas_[j].primitiveFieldRef();
@@ -532,6 +545,43 @@ void Foam::vheMixture::hold
         }
         alphas_[j].correctBoundaryConditions();
     }
+
+    // The shares keep the fluids' sum, not each fluid: where a body
+    // crosses a free surface, the cells it leaves take water and air in
+    // their proportions, and tutorials/floatingBodies lost 0.7 % of its
+    // water to the air by t = 6.  Each fluid but the last gets its volume
+    // back across its own interfaces with the fluids after it, a_j += s
+    // a_j L (L their sum in the cell; |s| <= 1 keeps a_j in [0, a_j + L]),
+    // those fluids scaled to keep a_j + L; the last fluid takes what the
+    // held phases changed
+    if (fluids.size() < 2) return;
+    for (label f = 0; f < fluids.size() - 1; ++f)
+    {
+        // The later fluids' sum L in each cell: a_j + L is kept
+        scalarField L(nCells, Zero);
+        for (label g = f + 1; g < fluids.size(); ++g)
+        {
+            L += max(alphas_[fluids[g]].primitiveField(), scalar(0));
+        }
+        scalarField& aj = alphas_[fluids[f]].primitiveFieldRef();
+        const scalarField w(max(aj, scalar(0))*L);
+        const scalar W = gSum(w*V);
+        if (W <= VSMALL) continue;
+        const scalar sj =
+            max(min((V0[f] - gSum(aj*V))/W, scalar(1)), scalar(-1));
+        forAll(aj, c)
+        {
+            if (w[c] <= 0) continue;
+            const scalar da = sj*w[c];
+            aj[c] += da;
+            for (label g = f + 1; g < fluids.size(); ++g)
+            {
+                scalar& ag = alphas_[fluids[g]].primitiveFieldRef()[c];
+                ag = max(ag, scalar(0))*(L[c] - da)/L[c];
+            }
+        }
+    }
+    for (const label j : fluids) alphas_[j].correctBoundaryConditions();
 }
 
 
