@@ -17,6 +17,6 @@ FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
 bodies { disk { material rubber; shape cylinder; centre ($c $c 0.5); radius 0.1; axis (0 0 1); } }
 DICT
 couetteWalls "$d" "$n" || exit 1
-(cd "$d" && foamDictionary -entry adjustTimeStep -set no system/controlDict && foamDictionary -entry deltaT -set $dt system/controlDict && foamDictionary -entry writeControl -set runTime system/controlDict) > /dev/null
+fixedStep "$d" "$dt" || exit 1
 (cd "$d" && setBodies > log.setBodies 2>&1 && vheFoam > log.vheFoam 2>&1)
 awk '!/^#/ {print $1, $14}' $d/postProcessing/bodies/0/bodies.dat | tail -2

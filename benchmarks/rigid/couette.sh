@@ -24,8 +24,6 @@ bodies { disk { material rubber; shape cylinder; centre (0.5 0.5 0.5); radius 0.
 DICT
 fi
 couetteWalls "$d" "$n" || exit 1
-(cd "$d" && foamDictionary -entry adjustTimeStep -set no system/controlDict) > /dev/null
-(cd "$d" && foamDictionary -entry deltaT -set "$dt" system/controlDict) > /dev/null
-(cd "$d" && foamDictionary -entry writeControl -set runTime system/controlDict) > /dev/null
+fixedStep "$d" "$dt" || exit 1
 [ "$nd" = 1 ] && { (cd "$d" && setBodies > log.setBodies 2>&1) || exit 1; }
 (cd "$d" && vheFoam > log.vheFoam 2>&1)

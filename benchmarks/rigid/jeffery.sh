@@ -21,8 +21,6 @@ bodies { ellipse { material rubber; shape ellipsoid; centre (0.5 0.5 0.5); semiA
 DICT
 couetteWalls "$d" "$n" || exit 1
 (cd "$d" && foamDictionary -entry functions/flowRate -remove system/controlDict) > /dev/null
-for e in "adjustTimeStep no" "deltaT $dt" "writeControl runTime"; do
-    (cd "$d" && foamDictionary -entry ${e% *} -set "${e#* }" system/controlDict) > /dev/null
-done
+fixedStep "$d" "$dt" || exit 1
 (cd "$d" && setBodies > log.setBodies 2>&1) || exit 1
 (cd "$d" && vheFoam > log.vheFoam 2>&1)

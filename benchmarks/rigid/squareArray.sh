@@ -37,8 +37,7 @@ cat > "$d/system/setBodiesDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
 bodies { cylinder { material rubber; shape cylinder; centre (0.5 0.5 0.5); radius $r; axis (0 0 1); } }
 DICT
-for e in "functions/flowRate/writeInterval 1" "adjustTimeStep no" "deltaT ${DT:-0.01}" "writeControl runTime"; do
-    (cd "$d" && foamDictionary -entry ${e% *} -set "${e#* }" system/controlDict) > /dev/null
-done
+(cd "$d" && foamDictionary -entry functions/flowRate/writeInterval -set 1 system/controlDict) > /dev/null
+fixedStep "$d" "${DT:-0.01}" || exit 1
 (cd "$d" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || exit 1
 (cd "$d" && vheFoam > log.vheFoam 2>&1)

@@ -41,8 +41,6 @@ FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
 bodies { stirrer { material rubber; shape cylinder; centre (0.5 0.5 0.5); radius 0.1; axis (0 0 1); } }
 DICT
 (cd "$d" && foamDictionary -entry functions/flowRate -remove system/controlDict) > /dev/null
-for e in "adjustTimeStep no" "deltaT 0.01" "writeControl runTime"; do
-    (cd "$d" && foamDictionary -entry ${e% *} -set "${e#* }" system/controlDict) > /dev/null
-done
+fixedStep "$d" 0.01 || exit 1
 (cd "$d" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || exit 1
 (cd "$d" && vheFoam > log.vheFoam 2>&1)

@@ -60,6 +60,15 @@ open(p, 'w').write(s)
 PY
 }
 
+# fixedStep DIR DT: a fixed step DT and writes at run times (controlDict)
+fixedStep() {
+    local e
+    for e in "adjustTimeStep no" "deltaT $2" "writeControl runTime"; do
+        (cd "$1" && foamDictionary -entry ${e% *} -set "${e#* }" system/controlDict) \
+            > /dev/null || return 1
+    done
+}
+
 # run DIR APP ARGS...: run in DIR, log to DIR/log.APP, return its status
 run() {
     local dir=$1 app=$2; shift 2

@@ -92,8 +92,8 @@ void Foam::bodyShapes::draw
 ) const
 {
     updateBoxes();
-    const double q[9] =
-        {Q.xx(), Q.xy(), Q.xz(), Q.yx(), Q.yy(), Q.yz(), Q.zx(), Q.zy(), Q.zz()};
+    // A tensor's components are row-major, as the C core's rotation
+    const double* q = Q.cdata();
 
     // The pose and its periodic images that may reach into the mesh
     DynamicList<vector> images(1, X);
@@ -289,10 +289,8 @@ Foam::scalar Foam::bodyShapes::sdf
     const vector& x
 ) const
 {
-    const double q[9] =
-        {Q.xx(), Q.xy(), Q.xz(), Q.yx(), Q.yy(), Q.yz(), Q.zx(), Q.zy(), Q.zz()};
     const vector Y(x - nearestImage(x - X));
-    return vhe_shape_sdf_posed(&s, q, Y.cdata(), x.cdata());
+    return vhe_shape_sdf_posed(&s, Q.cdata(), Y.cdata(), x.cdata());
 }
 
 

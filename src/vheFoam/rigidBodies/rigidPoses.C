@@ -6,8 +6,27 @@
 #include "volFields.H"
 #include "OSspecific.H"
 #include "emptyFvPatch.H"
+#include "Map.H"
 #include <cmath>
 #include <functional>
+
+namespace Foam
+{
+namespace
+{
+    //- The least g over all processors and the x that goes with it (the
+    //  x of the processor holding the least; ties: the largest
+    //  components)
+    scalar globalMin(const scalar g, vector& x)
+    {
+        const scalar gMin = returnReduce(g, minOp<scalar>());
+        if (g > gMin) x = vector::uniform(-GREAT);
+        reduce(x, maxOp<vector>());
+        return gMin;
+    }
+}
+}
+
 
 bool Foam::rigidPoses::stateDict::writeData(Ostream& os) const
 {
@@ -70,6 +89,10 @@ Foam::rigidPoses::rigidPoses
                 b.phase = i;
             }
         }
+        b.shape = bodyShapes::read(d.subDict("shape"));
+        b.volume = d.get<scalar>("volume");
+        b.X = d.get<vector>("centre");
+        b.Q = d.get<tensor>("orientation");
         if (b.phase < 0)
         {
             // A fixed body: an obstacle to the free ones
@@ -78,20 +101,12 @@ Foam::rigidPoses::rigidPoses
                 if (phases[i].material == b.material && phases[i].fixed)
                 {
                     b.phase = i;
-                    b.shape = bodyShapes::read(d.subDict("shape"));
-                    b.volume = d.get<scalar>("volume");
-                    b.X = d.get<vector>("centre");
-                    b.Q = d.get<tensor>("orientation");
                     obstacles_.append(b);
                     break;
                 }
             }
             continue;
         }
-        b.shape = bodyShapes::read(d.subDict("shape"));
-        b.volume = d.get<scalar>("volume");
-        b.X = d.get<vector>("centre");
-        b.Q = d.get<tensor>("orientation");
         b.X0 = b.X;
         b.Q0 = b.Q;
         b.U = d.getOrDefault<vector>("velocity", Zero);
@@ -195,7 +210,7 @@ void Foam::rigidPoses::drawObstacles()
 }
 
 
-Foam::scalar Foam::rigidPoses::draw(const label b)
+void Foam::rigidPoses::draw(const label b)
 {
     const fvMesh& mesh = mixture_.rho().mesh();
     const body& bd = bodies_[b];
@@ -204,23 +219,23 @@ Foam::scalar Foam::rigidPoses::draw(const label b)
     shapes_.draw(bd.shape, bd.Q, bd.X, cells, frac);
 
     // A cell reached by two periodic images counts once, summed
-    labelList slot(mesh.nCells(), -1);
+    Map<label> slot(2*cells.size());
     DynamicList<label>& c = cells_[b];
     DynamicList<scalar>& a = alpha_[b];
     c.clear();
     a.clear();
     forAll(cells, k)
     {
-        label& s = slot[cells[k]];
-        if (s < 0)
+        const auto iter = slot.cfind(cells[k]);
+        if (iter.found())
         {
-            s = c.size();
-            c.append(cells[k]);
-            a.append(frac[k]);
+            a[*iter] += frac[k];
         }
         else
         {
-            a[s] += frac[k];
+            slot.insert(cells[k], c.size());
+            c.append(cells[k]);
+            a.append(frac[k]);
         }
     }
     scalarField V(c.size());
@@ -234,9 +249,7 @@ Foam::scalar Foam::rigidPoses::draw(const label b)
     vhe_volume_sums(a.size(), a.cdata(), V.cdata(), sums);
     reduce(sums[0], sumOp<scalar>());
     reduce(sums[1], sumOp<scalar>());
-    const scalar drawn = sums[0];
     vhe_volume_shift(a.size(), a.data(), sums, bd.volume);
-    return drawn;
 }
 
 
@@ -279,14 +292,8 @@ void Foam::rigidPoses::move(vheMixture& mixture)
     {
         body& bd = bodies_[b];
         bd.X = bd.X0 + dt*bd.U;
-        double q[9] =
-        {
-            bd.Q0.xx(), bd.Q0.xy(), bd.Q0.xz(),
-            bd.Q0.yx(), bd.Q0.yy(), bd.Q0.yz(),
-            bd.Q0.zx(), bd.Q0.zy(), bd.Q0.zz()
-        };
-        vhe_pose_rotate(q, bd.omega.cdata(), dt);
-        bd.Q = tensor(q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7], q[8]);
+        bd.Q = bd.Q0;
+        vhe_pose_rotate(bd.Q.data(), bd.omega.cdata(), dt);
         if (normal >= 0) bd.angle = bd.angle0 + dt*bd.omega[normal];
         // The rest of a body's edge wraps into the mesh: its centre too
         for (direction k = 0; k < 3; ++k)
@@ -361,17 +368,17 @@ Foam::scalar Foam::rigidPoses::gap
 ) const
 {
     const vectorField& C = mixture_.rho().mesh().C();
-    const std::function<scalar(const vector&)> fa = [&](const vector& x)
+    typedef std::function<scalar(const vector&)> distance;
+    const distance fa = [&](const vector& x)
     {
         return shapes_.sdf(A.shape, A.Q, A.X, x);
     };
-    const std::function<scalar(const vector&)> fb = [&](const vector& x)
+    const distance fb = [&](const vector& x)
     {
         return shapes_.sdf(B.shape, B.Q, B.X, x);
     };
     // A distance's gradient, by central differences
     const scalar e = 1e-3*h;
-    typedef std::function<scalar(const vector&)> distance;
     const auto grad = [&](const distance& f, const vector& x)
     {
         vector g(Zero);
@@ -385,8 +392,7 @@ Foam::scalar Foam::rigidPoses::gap
     };
 
     // The cell centre nearest the middle of the gap: least max(sdf_a,
-    // sdf_b) over the cells the two reached at their last drawing (the
-    // other processors' places stay at -GREAT)
+    // sdf_b) over the cells the two reached at their last drawing
     scalar g = GREAT;
     vector x0(vector::uniform(-GREAT));
     for (const DynamicList<label>* cells : {&cellsA, &cellsB})
@@ -401,9 +407,7 @@ Foam::scalar Foam::rigidPoses::gap
             }
         }
     }
-    const scalar gMin = returnReduce(g, minOp<scalar>());
-    if (g > gMin) x0 = vector::uniform(-GREAT);
-    reduce(x0, maxOp<vector>());
+    const scalar gMin = globalMin(g, x0);
     if (gMin >= GREAT) return GREAT;
 
     // Overlapping: half the sampled depth, along the distances' gradients
@@ -435,23 +439,71 @@ void Foam::rigidPoses::separate()
     const label n = bodies_.size();
     contacts_.clear();
 
+    // A shape's bounding radius in the case's directions, and the smallest
+    // cell a body reaches (on this processor)
+    const auto radius = [&](const vhe_shape& shape)
+    {
+        double lo[3], hi[3];
+        vhe_shape_bounds(&shape, lo, hi);
+        scalar r2 = 0;
+        for (label k = 0; k < shapes_.nDim(); ++k)
+        {
+            r2 += sqr(0.5*(hi[k] - lo[k]));
+        }
+        return Foam::sqrt(r2);
+    };
+    const auto smallest = [&](const DynamicList<label>& cells)
+    {
+        scalar h = GREAT;
+        for (const label c : cells) h = min(h, shapes_.cellSize(c));
+        return h;
+    };
+
     // Each body's cell size (its smallest cell) and bounding radius
     scalarList h(n, GREAT), R(n, Zero);
     forAll(bodies_, b)
     {
-        for (const label c : cells_[b]) h[b] = min(h[b], shapes_.cellSize(c));
-        double lo[3], hi[3];
-        vhe_shape_bounds(&bodies_[b].shape, lo, hi);
-        for (label k = 0; k < shapes_.nDim(); ++k)
-        {
-            R[b] += sqr(0.5*(hi[k] - lo[k]));
-        }
-        R[b] = Foam::sqrt(R[b]);
+        h[b] = smallest(cells_[b]);
+        R[b] = radius(bodies_[b].shape);
     }
     Pstream::listCombineGather(h, minEqOp<scalar>());
     Pstream::listCombineScatter(h);
 
     scalar push = 0;
+
+    // Body a and body B (body b, or a fixed body: b = -1, mass GREAT) of
+    // cell size hB and radius RB: where nearer than half their cells, a
+    // moves away from B, and B from a, in inverse proportion to their
+    // masses; the contact noted if asked.  Whether they moved
+    const auto collide = [&]
+    (
+        const label a,
+        const body& B,
+        const DynamicList<label>& cellsB,
+        const scalar hB,
+        const scalar RB,
+        const scalar mb,
+        const label b,
+        const bool note
+    )
+    {
+        if (h[a] >= GREAT || hB >= GREAT) return false;
+        const scalar margin = 0.5*(h[a] + hB);
+        const scalar dist = mag(shapes_.nearestImage(B.X - bodies_[a].X));
+        if (dist > R[a] + RB + margin) return false;
+        const scalar ma = mass(a);
+        if (ma >= GREAT && mb >= GREAT) return false;
+        vector nab;
+        const scalar g =
+            gap(bodies_[a], cells_[a], B, cellsB, min(h[a], hB), nab);
+        if (g >= margin) return false;
+        const scalar wa = ma >= GREAT ? 0 : mb >= GREAT ? 1 : mb/(ma + mb);
+        push = max(push, (margin - g)/margin);
+        bodies_[a].X -= wa*(margin - g)*nab;
+        if (b >= 0) bodies_[b].X += (1 - wa)*(margin - g)*nab;
+        if (note) contacts_.append({a, b, nab});
+        return true;
+    };
 
     // Body pairs, a few sweeps (a body may touch several)
     for (label sweep = 0; sweep < 3; ++sweep)
@@ -461,26 +513,13 @@ void Foam::rigidPoses::separate()
         {
             for (label b = a + 1; b < n; ++b)
             {
-                if (h[a] >= GREAT || h[b] >= GREAT) continue;
-                const scalar margin = 0.5*(h[a] + h[b]);
-                const scalar dist =
-                    mag(shapes_.nearestImage(bodies_[b].X - bodies_[a].X));
-                if (dist > R[a] + R[b] + margin) continue;
-                const scalar ma = mass(a), mb = mass(b);
-                if (ma >= GREAT && mb >= GREAT) continue;
-                vector nab;
-                const scalar g = gap
-                (
-                    bodies_[a], cells_[a], bodies_[b], cells_[b],
-                    min(h[a], h[b]), nab
-                );
-                if (g >= margin) continue;
-                const scalar wa = ma >= GREAT ? 0 : mb >= GREAT ? 1 : mb/(ma + mb);
-                push = max(push, (margin - g)/margin);
-                bodies_[a].X -= wa*(margin - g)*nab;
-                bodies_[b].X += (1 - wa)*(margin - g)*nab;
-                if (sweep == 0) contacts_.append({a, b, nab});
-                moved = true;
+                moved =
+                    collide
+                    (
+                        a, bodies_[b], cells_[b], h[b], R[b], mass(b), b,
+                        sweep == 0
+                    )
+                 || moved;
             }
         }
         if (!moved) break;
@@ -489,39 +528,15 @@ void Foam::rigidPoses::separate()
     // The fixed bodies placed by setBodies: obstacles that do not move
     forAll(obstacles_, o)
     {
-        const body& O = obstacles_[o];
-        scalar Ro = 0, ho = GREAT;
-        {
-            double lo[3], hi[3];
-            vhe_shape_bounds(&O.shape, lo, hi);
-            for (label k = 0; k < shapes_.nDim(); ++k)
-            {
-                Ro += sqr(0.5*(hi[k] - lo[k]));
-            }
-            Ro = Foam::sqrt(Ro);
-            for (const label c : obstacleCells_[o])
-            {
-                ho = min(ho, shapes_.cellSize(c));
-            }
-            reduce(ho, minOp<scalar>());
-        }
+        const scalar ho =
+            returnReduce(smallest(obstacleCells_[o]), minOp<scalar>());
+        const scalar Ro = radius(obstacles_[o].shape);
         forAll(bodies_, a)
         {
-            if (h[a] >= GREAT || ho >= GREAT || mass(a) >= GREAT) continue;
-            const scalar margin = 0.5*(h[a] + ho);
-            const scalar dist =
-                mag(shapes_.nearestImage(O.X - bodies_[a].X));
-            if (dist > R[a] + Ro + margin) continue;
-            vector nao;
-            const scalar g = gap
+            collide
             (
-                bodies_[a], cells_[a], O, obstacleCells_[o],
-                min(h[a], ho), nao
+                a, obstacles_[o], obstacleCells_[o], ho, Ro, GREAT, -1, true
             );
-            if (g >= margin) continue;
-            push = max(push, (margin - g)/margin);
-            bodies_[a].X -= (margin - g)*nao;
-            contacts_.append({a, -1, nao});
         }
     }
 
@@ -556,9 +571,7 @@ void Foam::rigidPoses::separate()
                 }
             }
         }
-        const scalar gMin = returnReduce(g, minOp<scalar>());
-        if (g > gMin) nw = vector::uniform(-GREAT);
-        reduce(nw, maxOp<vector>());
+        const scalar gMin = globalMin(g, nw);
         const scalar margin = 0.5*h[b];
         if (gMin >= margin) continue;
         push = max(push, (margin - gMin)/margin);
