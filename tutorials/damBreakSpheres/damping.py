@@ -16,15 +16,21 @@ T0, T1 = 1.0, 5.0
 
 
 def level(case):
-    path = os.path.join(case, "postProcessing", "liquidLevel", "0",
-                        "liquidLevel.dat")
+    """h_L(t) from every start time's file (a restarted run writes one
+    directory per start), the later start taking over from its time on"""
+    base = os.path.join(case, "postProcessing", "liquidLevel")
     rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            v = line.split()
-            rows.append((float(v[0]), float(v[1])))
+    for start in sorted(os.listdir(base), key=float):
+        path = os.path.join(base, start, "liquidLevel.dat")
+        if not os.path.exists(path):
+            continue
+        rows = [r for r in rows if r[0] < float(start)]
+        with open(path) as f:
+            for line in f:
+                if line.startswith("#") or not line.strip():
+                    continue
+                v = line.split()
+                rows.append((float(v[0]), float(v[1])))
     return rows
 
 
