@@ -21,7 +21,8 @@ Description
 
 #include "fvCFD.H"
 #include "dynamicFvMesh.H"
-#include "CorrectPhi.H"
+#include "vheRefineFvMesh.H"
+#include "fluxProjection.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "clockTime.H"
@@ -51,7 +52,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
-    #include "createDynamicFvMesh.H"
+    #include "createVheMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"
     #include "initContinuityErrs.H"
