@@ -14,7 +14,7 @@ import re
 import subprocess
 import sys
 
-steps, bigSteps = (int(a) for a in sys.argv[1:3])
+steps, bigSteps, hugeSteps = (int(a) for a in sys.argv[1:4])
 R = "results"
 
 
@@ -58,8 +58,12 @@ for name, case, prefix, ranks, key in [
         ("interFoam, no solid", "interFoam", "interFoam", 1, "ExecutionTime"),
         ("vheFoam, no solid", "vheNone", "vheFoam", 1, "ExecutionTime"),
         ("vheFoam, 4 spheres", "vheSpheres", "vheFoam", 1, "ExecutionTime"),
+        ("multiphaseInterFoam, 4 phases", "multiphase", "multiphaseInterFoam",
+         1, "ExecutionTime"),
         ("vheFoam, 4 spheres, big, 1 rank", "big", "np1", 1, "wall"),
-        ("vheFoam, 4 spheres, big, 2 ranks", "big", "np2", 2, "wall")]:
+        ("vheFoam, 4 spheres, big, 2 ranks", "big", "np2", 2, "wall"),
+        ("vheFoam, 4 spheres, huge, 1 rank", "huge", "np1", 1, "wall"),
+        ("vheFoam, 4 spheres, huge, 2 ranks", "huge", "np2", 2, "wall")]:
     cost, n, wall, rss = runs(case, prefix, key)
     cells = nCells(case)
     rows.append(dict(run=name, cells=cells, ranks=ranks, steps=n,
@@ -75,13 +79,40 @@ with open(f"{R}/performance.csv", "w", newline="") as f:
 c = {r["run"]: float(r["s_per_step"]) for r in rows}
 m = {r["run"]: float(r["maxRSS_MB"] or 0) for r in rows}
 inter, none, sph = "interFoam, no solid", "vheFoam, no solid", "vheFoam, 4 spheres"
+multi = "multiphaseInterFoam, 4 phases"
 big1, big2 = "vheFoam, 4 spheres, big, 1 rank", "vheFoam, 4 spheres, big, 2 ranks"
+huge1, huge2 = "vheFoam, 4 spheres, huge, 1 rank", "vheFoam, 4 spheres, huge, 2 ranks"
 ratios = [
     ("time per step, vheFoam no solid / interFoam", c[none] / c[inter], "<= 1.05"),
     ("peak memory, vheFoam no solid / interFoam", m[none] / m[inter], "<= 1.05"),
     ("cost per cell-step, 4 spheres / no solid", c[sph] / c[none], "<= 1.3"),
+    ("peak memory, 4 spheres / no solid", m[sph] / m[none], "<= 1.1"),
+    ("time per step, 4 spheres / multiphaseInterFoam 4 phases",
+     c[sph] / c[multi], "<= 1"),
     ("2-rank parallel efficiency (t1 / 2 t2)", c[big1] / (2 * c[big2]), ">= 0.85"),
+    ("2-rank parallel efficiency, 453,600 cells", c[huge1] / (2 * c[huge2]), ">= 0.85"),
 ]
+
+
+def mpiShare(case):
+    """Share of the perf samples of a 2-rank run in Open MPI's libraries"""
+    path = f"cases/{case}/perf.txt"
+    if not os.path.exists(path):
+        return None
+    share = 0.0
+    for line in open(path):
+        mm = re.match(r"\s*([\d.]+)%\s+(\S+)", line)
+        if mm and re.search(r"(libmpi|libopen-|mca_|libucp|libuct|libucs|libfabric|libpsm)",
+                            mm.group(2)):
+            share += float(mm.group(1)) / 100
+    return share
+
+
+for case, name in (("big", "262,500"), ("huge", "453,600")):
+    share = mpiShare(case)
+    if share is not None:
+        ratios.append((f"MPI share of the 2-rank run, {name} cells (perf)",
+                       share, "(model input)"))
 
 
 # Profile: OpenFOAM's sections (inclusive times) and perf's symbols
