@@ -10,7 +10,6 @@
 #include "fvc.H"
 #include "MULES.H"
 #include "upwind.H"
-#include "HashTable.H"
 #include "profiling.H"
 #include "vheFlat.H"
 #include "vhe.h"
@@ -33,174 +32,23 @@ void Foam::vheMixture::checkSchemes() const
 }
 
 
-void Foam::vheMixture::solveAlphaStep
+void Foam::vheMixture::alphaFluxes
 (
-    const labelList& active,
+    const transported& t,
     scalar cAlpha,
-    label nLimitSumIter,
-    scalar deltaT,
-    scalar weight
-)
+    PtrList<surfaceScalarField>& alphaPhis
+) const
 {
     const word alphaScheme("div(phi,alpha)");
-
-    // The fields MULES transports.  A solid material with two or more
-    // active colours: each colour that meets another (bodies of two
-    // colours touching) is a phase of its own, compressed against the
-    // colours it meets; the colours that meet none are transported as one
-    // phase, their sum, and carried on its flux afterwards (colourShares).
-    // Fields of one material that do not meet are not compressed against
-    // each other (their compression is below 1e-10).
-    HashTable<labelList, word> coloursOf;
-    wordList materials;
-    for (const label i : active)
-    {
-        if (!phases_[i].solid) continue;
-        if (!coloursOf.found(phases_[i].material))
-        {
-            materials.append(phases_[i].material);
-        }
-        coloursOf(phases_[i].material).append(i);
-    }
-    const label nMax = active.size() + materials.size();
-    UPtrList<volScalarField> fields(nMax);
-    List<scalar> rhoF(nMax);
-    List<bool> solidF(nMax);             // elastic: its flux carries B*
-    List<labelList> carried(nMax);      // the colours a sum carries
-    labelList matOf(nMax, -1);          // material (index), -1: a fluid
-    labelList colOf(nMax, -1);          // colour in meet (-1: meets none)
-    List<labelList> meets(materials.size());
-    PtrList<volScalarField> sums(nMax);
-    label n = 0;
-    const auto add = [&](volScalarField* f, const phase& ph, label m, label c)
-    {
-        fields.set(n, f);
-        rhoF[n] = ph.rho;
-        solidF[n] = ph.solid && !ph.rigid;    // B* is carried with elastic solids
-        matOf[n] = m;
-        colOf[n] = c;
-        return n++;
-    };
-    for (const label i : active)
-    {
-        const phase& ph = phases_[i];
-        if (!ph.solid)
-        {
-            add(&alphas_[i], ph, -1, -1);
-            continue;
-        }
-        const label m = materials.find(ph.material);
-        const labelList& cols = coloursOf[ph.material];
-        if (cols[0] != i) continue;     // the material's first colour adds all
-        const label K = cols.size();
-        if (K == 1)
-        {
-            add(&alphas_[i], ph, m, -1);
-            continue;
-        }
-        UPtrList<volScalarField> colours(K);
-        forAll(cols, k) colours.set(k, &alphas_[cols[k]]);
-        meets[m] = colourShares::meeting(colours);
-        labelList lump;
-        for (label k = 0; k < K; ++k)
-        {
-            bool meetsAny = false;
-            for (label l = 0; l < K; ++l) meetsAny = meetsAny || meets[m][k*K + l];
-            if (meetsAny) add(&alphas_[cols[k]], ph, m, k);
-            else lump.append(cols[k]);
-        }
-        if (lump.size() == 1)
-        {
-            add(&alphas_[lump[0]], ph, m, -1);
-        }
-        else if (lump.size() > 1)
-        {
-            // Their sum, old time first, with colour 0's boundary types
-            const auto sumOf = [&](const bool old)
-            {
-                tmp<volScalarField> tsum
-                (
-                    new volScalarField
-                    (
-                        IOobject
-                        (
-                            "alpha." + ph.material + ".sum",
-                            mesh_.time().timeName(), mesh_,
-                            IOobject::NO_READ, IOobject::NO_WRITE, false
-                        ),
-                        mesh_,
-                        dimensionedScalar(dimless, Zero),
-                        alphas_[i].boundaryField().types()
-                    )
-                );
-                volScalarField& sum = tsum.ref();
-                for (const label c : lump)
-                {
-                    const volScalarField& ac =
-                        old ? alphas_[c].oldTime() : alphas_[c];
-                    sum.primitiveFieldRef() += ac.primitiveField();
-                    forAll(sum.boundaryField(), patchi)
-                    {
-                        sum.boundaryFieldRef()[patchi] ==
-                            sum.boundaryField()[patchi]
-                          + ac.boundaryField()[patchi];
-                    }
-                }
-                return tsum;
-            };
-            sums.set(n, sumOf(true));
-            sums[n].oldTime();
-            sums[n] == sumOf(false)();
-            carried[n] = lump;
-            add(&sums[n], ph, m, -1);
-        }
-    }
-    fields.setSize(n);
-
-    // The pairs of fields compressed against each other
-    List<bool> pairOn(n*(n - 1)/2, true);
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = i + 1; j < n; ++j)
-        {
-            const label m = matOf[i];
-            if (m < 0 || matOf[j] != m) continue;
-            const label K = coloursOf[materials[m]].size();
-            pairOn[pairIndex(i, j, n)] =
-                colOf[i] >= 0 && colOf[j] >= 0
-             && meets[m][colOf[i]*K + colOf[j]];
-        }
-    }
+    const label n = t.size();
 
     surfaceScalarField phic(mag(phi_/mesh_.magSf()));
     phic = min(cAlpha*phic, max(phic));
 
-    addProfiling(mules, "vheMixture::MULES");
-
-    PtrList<surfaceScalarField> alphaPhis(n);
-
-    // MULES: field i's full flux in, its limited correction to the upwind
-    // flux out (returnCorr), bounds [0, 1]
-    const auto limitCorrection = [&](const label i)
-    {
-        addProfiling(limit, "vheMixture::MULES::limit");
-        MULES::limit
-        (
-            1.0/deltaT,
-            geometricOneField(),
-            fields[i],
-            phi_,
-            alphaPhis[i],
-            zeroField(),
-            zeroField(),
-            oneField(),
-            zeroField(),
-            true
-        );
-    };
     // Each field's high-order flux, then the interface compression of
     // every pair that is on (multiphaseMixture's, linear face values; the
-    // C core, one pass over the faces per pair), then MULES's limiter
+    // C core, one pass over the faces per pair)
+    alphaPhis.setSize(n);
     PtrList<surfaceScalarField> af(n);
     PtrList<surfaceVectorField> gf(n);
     for (label i = 0; i < n; ++i)
@@ -210,18 +58,18 @@ void Foam::vheMixture::solveAlphaStep
             i,
             new surfaceScalarField
             (
-                "alphaPhi." + fields[i].name(),
-                fvc::flux(phi_, fields[i], alphaScheme)
+                "alphaPhi." + t.fields[i].name(),
+                fvc::flux(phi_, t.fields[i], alphaScheme)
             )
         );
-        af.set(i, fvc::interpolate(fields[i]));
-        gf.set(i, fvc::interpolate(fvc::grad(fields[i])));
+        af.set(i, fvc::interpolate(t.fields[i]));
+        gf.set(i, fvc::interpolate(fvc::grad(t.fields[i])));
     }
     for (label i = 0; i < n; ++i)
     {
         for (label j = i + 1; j < n; ++j)
         {
-            if (!pairOn[pairIndex(i, j, n)]) continue;
+            if (!t.pairOn[pairIndex(i, j, n)]) continue;
             vhe_compress_pair
             (
                 mesh_.nInternalFaces(), phic.primitiveField().cdata(),
@@ -248,8 +96,39 @@ void Foam::vheMixture::solveAlphaStep
             }
         }
     }
-    af.clear();
-    gf.clear();
+}
+
+
+void Foam::vheMixture::limitFluxes
+(
+    const transported& t,
+    label nLimitSumIter,
+    scalar deltaT,
+    PtrList<surfaceScalarField>& alphaPhis,
+    PtrList<scalarField>& alphaNew
+) const
+{
+    const label n = t.size();
+
+    // MULES: field i's full flux in, its limited correction to the upwind
+    // flux out (returnCorr), bounds [0, 1]
+    const auto limitCorrection = [&](const label i)
+    {
+        addProfiling(limit, "vheMixture::MULES::limit");
+        MULES::limit
+        (
+            1.0/deltaT,
+            geometricOneField(),
+            t.fields[i],
+            phi_,
+            alphaPhis[i],
+            zeroField(),
+            zeroField(),
+            oneField(),
+            zeroField(),
+            true
+        );
+    };
     for (label i = 0; i < n; ++i)
     {
         limitCorrection(i);
@@ -262,7 +141,10 @@ void Foam::vheMixture::solveAlphaStep
     PtrList<surfaceScalarField> alphaPhiUDs(nLimitSumIter > 0 ? n : 0);
     for (label i = 0; i < n; ++i)
     {
-        tmp<surfaceScalarField> tUD(upwind<scalar>(mesh_, phi_).flux(fields[i]));
+        tmp<surfaceScalarField> tUD
+        (
+            upwind<scalar>(mesh_, phi_).flux(t.fields[i])
+        );
         alphaPhis[i] += tUD();
         if (nLimitSumIter > 0)
         {
@@ -276,7 +158,7 @@ void Foam::vheMixture::solveAlphaStep
     {
         return tmp<scalarField>
         (
-            fields[i].oldTime().primitiveField()
+            t.fields[i].oldTime().primitiveField()
           - deltaT*fvc::surfaceIntegrate(alphaPhis[i])().primitiveField()
         );
     };
@@ -290,7 +172,7 @@ void Foam::vheMixture::solveAlphaStep
     // the floatingBlock tutorial).  Overshoots above 1 need no pass: the
     // sum correction below takes them out once all are >= 0.  The last
     // check's update is the step's.
-    PtrList<scalarField> alphaNew(n);
+    alphaNew.setSize(n);
     for (label iter = 0; nLimitSumIter > 0; ++iter)
     {
         scalar lo = GREAT;
@@ -315,16 +197,43 @@ void Foam::vheMixture::solveAlphaStep
         }
     }
 
-    endProfiling(mules);
+    // Without a bounds check, the update here
+    for (label i = 0; i < n; ++i)
+    {
+        if (!alphaNew.set(i)) alphaNew.set(i, update(i).ptr());
+    }
+}
+
+
+void Foam::vheMixture::solveAlphaStep
+(
+    const labelList& active,
+    scalar cAlpha,
+    label nLimitSumIter,
+    scalar deltaT,
+    scalar weight
+)
+{
+    transported t;
+    selectTransported(active, t);
+    const label n = t.size();
+
+    PtrList<surfaceScalarField> alphaPhis;
+    PtrList<scalarField> alphaNew;
+    {
+        addProfiling(mules, "vheMixture::MULES");
+        alphaFluxes(t, cAlpha, alphaPhis);
+        limitFluxes(t, nLimitSumIter, deltaT, alphaPhis, alphaNew);
+    }
 
     // The colours a sum carries, on its flux
     for (label i = 0; i < n; ++i)
     {
-        if (carried[i].empty()) continue;
-        UPtrList<volScalarField> colours(carried[i].size());
-        forAll(carried[i], c)
+        if (t.carried[i].empty()) continue;
+        UPtrList<volScalarField> colours(t.carried[i].size());
+        forAll(t.carried[i], c)
         {
-            colours.set(c, &alphas_[carried[i][c]]);
+            colours.set(c, &alphas_[t.carried[i][c]]);
         }
         colourShares::transport(colours, alphaPhis[i], deltaT);
     }
@@ -332,16 +241,14 @@ void Foam::vheMixture::solveAlphaStep
     rhoPhi_ = dimensionedScalar(rhoPhi_.dimensions(), Zero);
     for (label i = 0; i < n; ++i)
     {
-        volScalarField& alpha = fields[i];
+        volScalarField& alpha = t.fields[i];
         const surfaceScalarField& alphaPhi = alphaPhis[i];
 
-        // The update of the bounds check when there was one
-        alpha.primitiveFieldRef() =
-            alphaNew.set(i) ? alphaNew[i] : update(i)();
+        alpha.primitiveFieldRef() = alphaNew[i];
         alpha.correctBoundaryConditions();
 
-        rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, rhoF[i]);
-        if (solidF[i])
+        rhoPhi_ += alphaPhi*dimensionedScalar("rho", dimDensity, t.rho[i]);
+        if (t.elastic[i])
         {
             *alphaPhiSolid_ += weight*alphaPhi;
         }
