@@ -85,7 +85,9 @@ def evaluate(case, flow, scheme, n, time):
     nc = len(C)
     V = (1.0 / n) ** 2
     p0, p1 = alpha(case, 0, nc), alpha(case, time, nc)
-    Bs, _ = read_internal(f"{case}/{time}/Bstar")
+    # isoAdvector carries phi_s alone: no B
+    hasB = os.path.exists(f"{case}/{time}/Bstar")
+    Bs = read_internal(f"{case}/{time}/Bstar")[0] if hasB else [[1.0] * 6]
     if len(Bs) != nc:
         Bs = Bs * nc
     area = math.pi * DISKS[flow][1] ** 2
@@ -106,10 +108,11 @@ def evaluate(case, flow, scheme, n, time):
         for line in open(diag):
             if line.strip() and not line.startswith("#"):
                 drift = max(drift, float(line.split()[4]))
-    log = open(f"{case}/log.vheFoam").read()
+    log = open(f"{case}/log.vheFoam" if hasB else f"{case}/log.isoTransport").read()
     wall = re.findall(r"ExecutionTime = (\S+) s", log)
-    print(f"{flow},{scheme},{n},{ephi:.4e},{l1 / max(vol, 1e-300):.4e},"
-          f"{emax:.4e},{drift:.3e},{wall[-1] if wall else ''}")
+    eB = f"{l1 / max(vol, 1e-300):.4e},{emax:.4e}" if hasB else ","
+    print(f"{flow},{scheme},{n},{ephi:.4e},{eB},"
+          f"{drift:.3e},{wall[-1] if wall else ''}")
 
 
 if __name__ == "__main__":

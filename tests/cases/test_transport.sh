@@ -11,6 +11,8 @@
 . "$(dirname "$0")/lib.sh"
 
 cp "$VHE_ROOT/benchmarks/transport/Allrun" "$VHE_ROOT/benchmarks/transport/transport.py" "$WORK/"
+cp -r "$VHE_ROOT/benchmarks/transport/isoAdvector" "$WORK/"
+rm -rf "$WORK"/isoAdvector/Make/linux64*
 "$WORK/Allrun" -quick > "$WORK/log.Allrun" 2>&1 || { fail transportRan "see $WORK/log.Allrun"; finish; }
 csv="$WORK/results/transport.csv"
 value() { grep "^$1,$2,$3," "$csv" | cut -d, -f"$4"; }   # flow scheme cells column
