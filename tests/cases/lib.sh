@@ -69,6 +69,14 @@ fixedStep() {
     done
 }
 
+# tightSolvers DIR TOL: every solver of DIR/system/fvSolution to tolerance
+# TOL and relTol 0, so that two runs (serial and parallel, vheFoam and
+# interFoam) differ by the solvers' tolerance rather than by their relTol
+tightSolvers() {
+    sed -i -E "s/relTol[[:space:]]+[0-9.eE+-]+;/relTol 0;/g; s/tolerance[[:space:]]+[0-9.eE+-]+;/tolerance $2;/g" \
+        "$1/system/fvSolution"
+}
+
 # run DIR APP ARGS...: run in DIR, log to DIR/log.APP, return its status
 run() {
     local dir=$1 app=$2; shift 2

@@ -16,8 +16,7 @@ sceneCase damBreakSpheres "$ser" n1=21 n2=10 n3=10 endTime=0.3 writeInterval=0.3
     GperRho=10 || { fail setup "$ser"; finish; }
 # tight pressure and velocity solves, so that serial and parallel differ by
 # round-off rather than by the solvers' relTol
-sed -i 's/relTol          0.05;/relTol 0;/g; s/tolerance       1e-7;/tolerance 1e-11;/g' \
-    "$ser/system/fvSolution"
+tightSolvers "$ser" 1e-11
 run "$ser" setFields && run "$ser" setBodies \
     || { fail setup "$ser"; finish; }
 cp -r "$ser" "$par"

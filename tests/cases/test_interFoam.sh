@@ -19,8 +19,7 @@ setupPair() {
     local vhe=$1 inter=$2; shift 2
     sceneCase damBreakSpheres "$vhe" "$@" endTime=0.5 writeInterval=0.5 \
         nSpheres=0 || return 1
-    sed -i 's/relTol          0.05;/relTol 0;/; s/tolerance       1e-7;/tolerance 1e-10;/' \
-        "$vhe/system/fvSolution"
+    tightSolvers "$vhe" 1e-10
     run "$vhe" setFields || return 1
     # The same case for interFoam (bin/vheToInterFoam)
     "$VHE_ROOT/bin/vheToInterFoam" "$vhe" "$inter" > /dev/null

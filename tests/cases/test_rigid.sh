@@ -94,8 +94,7 @@ PY2
 (run "$ob" setFields && run "$ob" setBodies) || { fail setupObstacle "$ob"; finish; }
 for v in serial parallel; do
     cp -r "$ob" "$ob.$v"
-    sed -i 's/relTol          0.05;/relTol 0;/; s/tolerance       1e-8;/tolerance 1e-12;/g' \
-        "$ob.$v/system/fvSolution"
+    tightSolvers "$ob.$v" 1e-12
 done
 run "$ob" vheFoam || fail obstacleRun "$ob/log.vheFoam"
 read -r gmin xend <<< "$(awk '!/^#/ {dx = $3 - 0.01; dy = $4 - 0.012
