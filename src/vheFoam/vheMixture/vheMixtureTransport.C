@@ -171,9 +171,10 @@ void Foam::vheMixture::limitFluxes
     // times: the cost is paid only where it is needed (one step in ten in
     // the floatingBlock tutorial).  Overshoots above 1 need no pass: the
     // sum correction below takes them out once all are >= 0.  The last
-    // check's update is the step's.
+    // check's update is the step's (without re-limiting, the update is
+    // not checked).
     alphaNew.setSize(n);
-    for (label iter = 0; nLimitSumIter > 0; ++iter)
+    for (label iter = 0; ; ++iter)
     {
         scalar lo = GREAT;
         for (label i = 0; i < n; ++i)
@@ -181,8 +182,11 @@ void Foam::vheMixture::limitFluxes
             alphaNew.set(i, update(i).ptr());
             lo = min(lo, min(alphaNew[i]));
         }
-        reduce(lo, minOp<scalar>());
-        if (lo >= -1e-9 || iter == nLimitSumIter)
+        if
+        (
+            iter == nLimitSumIter
+         || returnReduce(lo, minOp<scalar>()) >= -1e-9
+        )
         {
             break;
         }
@@ -195,12 +199,6 @@ void Foam::vheMixture::limitFluxes
         {
             alphaPhis[i] += alphaPhiUDs[i];
         }
-    }
-
-    // Without a bounds check, the update here
-    for (label i = 0; i < n; ++i)
-    {
-        if (!alphaNew.set(i)) alphaNew.set(i, update(i).ptr());
     }
 }
 
