@@ -80,18 +80,12 @@ def det(b):
         + xz * (xy * yz - yy * xz)
 
 
-def evaluate(case, flow, scheme, n, time):
-    C, _ = read_internal(f"{case}/0/C")
-    nc = len(C)
-    V = (1.0 / n) ** 2
-    p0, p1 = alpha(case, 0, nc), alpha(case, time, nc)
-    # isoAdvector carries phi_s alone: no B
-    hasB = os.path.exists(f"{case}/{time}/Bstar")
-    Bs = read_internal(f"{case}/{time}/Bstar")[0] if hasB else [[1.0] * 6]
-    if len(Bs) != nc:
-        Bs = Bs * nc
-    area = math.pi * DISKS[flow][1] ** 2
-    ephi = sum(abs(a - b) for a, b in zip(p0, p1)) * V / area
+def b_errors(case, time, C, p0, p1, flow, V):
+    """L1 (volume mean) and max error of B over the cells with phi_s > 0.5
+    in both the exact and the computed field"""
+    Bs, _ = read_internal(f"{case}/{time}/Bstar")
+    if len(Bs) != len(C):
+        Bs = Bs * len(C)
     l1 = vol = emax = 0.0
     for (x, y, _z), a, b, bs in zip(C, p0, p1, Bs):
         if a > 0.5 and b > 0.5:
@@ -102,15 +96,30 @@ def evaluate(case, flow, scheme, n, time):
             l1 += e * V
             vol += V
             emax = max(emax, e)
+    return l1 / max(vol, 1e-300), emax
+
+
+def evaluate(case, flow, scheme, n, time):
+    C, _ = read_internal(f"{case}/0/C")
+    nc = len(C)
+    V = (1.0 / n) ** 2
+    p0, p1 = alpha(case, 0, nc), alpha(case, time, nc)
+    area = math.pi * DISKS[flow][1] ** 2
+    ephi = sum(abs(a - b) for a, b in zip(p0, p1)) * V / area
+    # isoAdvector carries phi_s alone: no B
+    iso = scheme == "isoAdvector"
+    eB = ","
+    if not iso:
+        l1, emax = b_errors(case, time, C, p0, p1, flow, V)
+        eB = f"{l1:.4e},{emax:.4e}"
     drift = 0.0
     diag = f"{case}/postProcessing/solidDiagnostics/0/solidDiagnostics.dat"
     if os.path.exists(diag):
         for line in open(diag):
             if line.strip() and not line.startswith("#"):
                 drift = max(drift, float(line.split()[4]))
-    log = open(f"{case}/log.vheFoam" if hasB else f"{case}/log.isoTransport").read()
+    log = open(f"{case}/log.{'isoTransport' if iso else 'vheFoam'}").read()
     wall = re.findall(r"ExecutionTime = (\S+) s", log)
-    eB = f"{l1 / max(vol, 1e-300):.4e},{emax:.4e}" if hasB else ","
     print(f"{flow},{scheme},{n},{ephi:.4e},{eB},"
           f"{drift:.3e},{wall[-1] if wall else ''}")
 

@@ -20,7 +20,12 @@
 // (the disk lost 2 % of its volume crossing the periodic box once at 32
 // cells).  Afterwards: each inflow face takes minus its partner's
 // outflow volume, and its cell's fraction the difference
-void syncCyclic(volScalarField& alpha, const isoAdvection& advector)
+void syncCyclic
+(
+    volScalarField& alpha,
+    const surfaceScalarField& phi,
+    const isoAdvection& advector
+)
 {
     const fvMesh& mesh = alpha.mesh();
     // getRhoPhi(1, 0): the volume that crossed each face over the step,
@@ -31,8 +36,6 @@ void syncCyclic(volScalarField& alpha, const isoAdvection& advector)
     (
         advector.getRhoPhi(one, zero)*mesh.time().deltaT()/one
     );
-    const surfaceScalarField& phi =
-        mesh.lookupObject<surfaceScalarField>("phi");
     scalarField& a = alpha.primitiveFieldRef();
     forAll(mesh.boundary(), patchi)
     {
@@ -109,7 +112,7 @@ int main(int argc, char *argv[])
         ++runTime;
         flow.set(U, phi, runTime.value() - 0.5*runTime.deltaTValue());
         advector.advect();
-        syncCyclic(alpha, advector);
+        syncCyclic(alpha, phi, advector);
         Info<< "Time = " << runTime.timeName()
             << "  volume drift " << gSum(mesh.V()*alpha.primitiveField())/V0 - 1
             << "  alpha min, max = " << gMin(alpha.primitiveField()) << ' '
