@@ -45,10 +45,10 @@ Description
     colours where the colours allow, so that they never merge.
 
     In a 2D case (z empty) bodies are disks (cylinders along z, infinite),
-    boxes or ellipses (ellipsoids, infinite along z); packings make disks.  Periodic (cyclic) directions are found
-    from the mesh: bodies may cross them and are wrapped.  Every check is
-    made before anything is written.  Runs on a decomposed case with
-    -parallel.
+    boxes or ellipses (ellipsoids, infinite along z); packings make disks.
+    Periodic (cyclic) directions are found from the mesh: bodies may cross
+    them and are wrapped.  Every check is made before anything is written.
+    Runs on a decomposed case with -parallel.
 
 \*---------------------------------------------------------------------------*/
 
