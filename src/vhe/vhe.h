@@ -688,6 +688,23 @@ void vhe_compress_pair(long nFaces, const double *phic, const double *Sf,
 double vhe_height_curvature(const double h[9], double d1, double d2,
                             int dim);
 
+/* ----------------------------------------------------------------- anderson */
+
+/*
+ * Anderson acceleration (type II) of a fixed point x = G(x), residual
+ * f = G(x) - x, over the last m differences dF_i of residuals and dG_i of
+ * map values: x_new = G(x_k) - sum_i gamma_i dG_i with gamma minimising
+ * |f_k - sum_i gamma_i dF_i| (GMRES on a linear map).
+ *   gram[i*m + j] = <dF_i, dF_j>,  b[i] = <dF_i, f_k>  (the caller's inner
+ *   product, summed over processors);  gamma[m] out.
+ * The normal equations are solved with the columns scaled to unit norm
+ * and 1e-10 added to the diagonal; a column of zero norm takes gamma 0.
+ * Returns VHE_OK, or VHE_EBADARG (m outside [0, VHE_ANDERSON_MAX], NULL).
+ */
+#define VHE_ANDERSON_MAX 16
+int vhe_anderson_gamma(int m, const double *gram, const double *b,
+                       double *gamma);
+
 #ifdef __cplusplus
 }
 #endif

@@ -124,6 +124,8 @@ d=$(variant negativeStabilisation); sed -i 's/^    pRefValue .*/&\n    elasticSt
 expectFatal negativeStabilisation "$d" vheFoam "elasticStabilisation must be >= 0" fvSolution
 d=$(variant badSecondOrderWalls); sed -i 's/^    pRefValue .*/&\n    secondOrderWalls maybe;/' "$d/system/fvSolution"
 expectFatal badSecondOrderWalls "$d" vheFoam "Expected 'true/false', 'on/off' ... found maybe" fvSolution.PIMPLE.secondOrderWalls
+d=$(variant badCoupling); sed -i 's/^    pRefValue .*/&\n    coupling { tolerance -1; }/' "$d/system/fvSolution"
+expectFatal badCoupling "$d" vheFoam "coupling: tolerance must be > 0" fvSolution.PIMPLE.coupling
 d=$(variant unknownBTransport); sed -i 's/^    pRefValue .*/&\n    BTransport upwindish;/' "$d/system/fvSolution"
 expectFatal unknownBTransport "$d" vheFoam "Unknown BTransport 'upwindish'" fvSolution
 d=$(variant unknownPrescribedVelocity); sed -i 's/^    pRefValue .*/&\n    prescribedVelocity { type swirl; }/' "$d/system/fvSolution"

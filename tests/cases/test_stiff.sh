@@ -32,12 +32,14 @@ done
 steps() { grep -c "^Time = " "$WORK/$1/log.vheFoam"; }
 lastQ() { awk '!/^#/{q = -$2} END {print q}' "$WORK/$1/postProcessing/flowRate/0/surfaceFieldValue.dat"; }
 
-# The projection (pEqn.H) corrects U* by dt/rho grad(p increment), which
-# a stiff body does not resist: the disks take a spurious strain of the
-# splitting each step (measured: Q 1.7 % above the explicit variant's;
-# PISO, whose 1/A holds the elastic viscosity, had 0.12 % but diverges at
-# large viscous numbers).  A documented limitation of the coupling.
-splitting="projection splitting error in stiff bodies, docs/limitations.md"
+# Q is 1.7 % above the explicit variant's, and not from the splitting of
+# the prediction and the projection: the semi-implicit run iterates them to
+# their coupled solution (stepCoupling, 5.9 passes a step) and Q moves by
+# 2e-5 against one pass.  The cause is the projection's Rhie-Chow damping,
+# dt (a_f - interpolated a_c) on every face: liquid leaks past the disks'
+# edges in proportion to the step (the explicit variant's step is 12 times
+# smaller).  A documented limitation.
+splitting="Rhie-Chow damping of coefficient dt leaks past stiff bodies, docs/limitations.md"
 n0=$(steps none); ns=$(steps semiImplicit); ne=$(steps explicit)
 check stiffAtFlowStep "$ns <= 1.2*$n0" "semi-implicit $ns steps, no bodies $n0, explicit $ne"
 qs=$(lastQ semiImplicit); qe=$(lastQ explicit)
@@ -45,6 +47,26 @@ qh=$(lastQ halfStep)
 checkKnown stiffVariantsAgree "abs($qs/$qe - 1) < 1.5e-3" "abs($qs/$qe - 1) < 2.5e-2" \
     "Q semi-implicit $qs, explicit $qe" "$splitting"
 checkKnown stiffVariantsConverge "abs($qh - $qe) < 0.7*abs($qs - $qe)" "abs($qh - $qe) < abs($qs - $qe)" "Q semi-implicit at half the step $qh: difference $(python3 -c "print('%.2f' % (abs($qh - $qe)/abs($qs - $qe)))") of the full step's" "$splitting"
+# The step's coupling (stepCoupling): a stiff disk (G/(rho U^2) = 1e5) in
+# plane Couette flow at a viscous number of 10 turns with the flow, at
+# 0.992 of half the vorticity (a rigid disk 0.984); with one pass of the
+# prediction and projection it turned at 0.089 (the lagged transpose part
+# of its stress increment resisted rotation as an inertia of dt Ghat/dx^2).
+# Its wall stress is the rigid disk's of radius 0.07 rather than 0.1 (1.072
+# for a stiff disk of 0.07): every cell of the diffuse edge is stiff, G
+# phi_s with G/(rho U^2) = 1e5, where the rigid disk holds the cells of
+# fraction 1/4 or more; a KNOWN line until the edge is sharp (issue 25)
+couette="$VHE_ROOT/benchmarks/rigid/couette.sh"
+for b in 100000 rigid; do
+    "$couette" "$WORK/couette_$b" 32 "$b" 10 0.5 || fail "couette_$b" "$WORK/couette_$b/log.vheFoam"
+done
+read -r _ tauS wS _ <<< "$(python3 "$VHE_ROOT/benchmarks/rigid/couette.py" "$WORK/couette_100000" 32)"
+read -r _ tauR wR _ <<< "$(python3 "$VHE_ROOT/benchmarks/rigid/couette.py" "$WORK/couette_rigid" 32)"
+passes=$(grep Coupling "$WORK/couette_100000/log.vheFoam" | awk '{s += $2} END {if (NR) printf "%.1f", s/NR; else print 1}')
+check stiffDiskTurns "-($wS) > 0.97" "stiff disk's rotation rate over half the vorticity $(python3 -c "print(-($wS))") (rigid $(python3 -c "print(-($wR))")), $passes passes a step"
+checkKnown stiffRigidStress "abs($tauS/$tauR - 1) < 0.02" "abs($tauS/$tauR - 1) < 0.08" \
+    "wall stress over the body-free flow's: stiff $tauS, rigid $tauR" \
+    "a stiff body's diffuse edge is stiff: it acts as a rigid disk of radius 0.07 instead of 0.1, docs/limitations.md"
 devB=$(awk '!/^#/{m = $3} END {print m}' "$WORK/semiImplicit/postProcessing/solidDiagnostics/0/solidDiagnostics.dat")
 check stiffKeepShape "$devB < 0.01" "max |dev B| at t = 2: $devB"
 finish

@@ -36,6 +36,7 @@ Description
 #include "bodyColours.H"
 #include "bodyContact.H"
 #include "surfaceTension.H"
+#include "stepCoupling.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -94,14 +95,18 @@ int main(int argc, char *argv[])
             if (!flow.active())
             {
                 contact.correct();
-                #include "UEqn.H"
-
-                while (pimple.correct())
+                #include "startCoupling.H"
+                do
                 {
-                    #include "pEqn.H"
-                }
+                    #include "UEqn.H"
 
-                #include "rigidProjection.H"
+                    while (pimple.correct())
+                    {
+                        #include "pEqn.H"
+                    }
+
+                    #include "rigidProjection.H"
+                } while (coupling.loop(U, accelerationFlux, acceleration));
             }
 
             #include "BStretch.H"
