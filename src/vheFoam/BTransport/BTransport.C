@@ -71,28 +71,13 @@ Foam::BTransport::workspace& Foam::BTransport::work() const
     }
     w.nCells = nCells;
     w.nFaces = nFaces;
-    for (scalarField* f : {&w.out, &w.W, &w.m}) f->setSize(nCells);
-    w.a.setSize(nFaces);
-    w.G.setSize(18*nCells);
-    w.b.setSize(18*nCells);
-    w.b = 0;
     w.V.setSize(9*nCells);
     forAll(w.V, i)
     {
         w.V[i] = (i % 9) % 4 == 0 ? 1 : 0;
     }
-    for (symmTensorField* f : {&w.S, &w.X, &w.M, &w.Xmin, &w.Xmax, &w.mX})
-    {
-        f->setSize(nCells);
-    }
-    w.M = Zero;
-    w.A.setSize(nFaces);
-    w.delta.reset(mesh_.delta().ptr());
-    w.Psi0.reset(field("logB").ptr());
-    w.Emin.reset(field("logBmin").ptr());
-    w.Emax.reset(field("logBmax").ptr());
-    w.Rp.reset(field("logBRplus").ptr());
-    w.Rm.reset(field("logBRminus").ptr());
+    w.index.setSize(nCells);
+    w.index = -1;
     // Coupled (processor, cyclic) faces anywhere: their neighbours' values
     // come through volField boundary conditions (collective: all ranks)
     bool coupled = false;
@@ -102,12 +87,7 @@ Foam::BTransport::workspace& Foam::BTransport::work() const
         coupled = coupled || (p.coupled() && p.size());
     }
     w.coupled = returnReduce(coupled, orOp<bool>());
-    w.Gd.clear();
-    w.Gd.setSize(w.coupled ? 3 : 0);
-    forAll(w.Gd, d)
-    {
-        w.Gd.set(d, field("gradLogB" + Foam::name(d)).ptr());
-    }
+    w.scratch.reset(w.coupled ? field("logBExchange").ptr() : nullptr);
     return w;
 }
 
@@ -165,6 +145,56 @@ void Foam::BTransport::donorSums
         (
             ap.size(), mesh_.boundary()[patchi].faceCells().cdata(),
             ap.cdata(), flat(Xnb), out.data(), W.data(), flat(S)
+        );
+    }
+}
+
+
+void Foam::BTransport::donorSums
+(
+    const solidRegion& r,
+    const symmTensorField& X0,
+    const List<symmTensorField>& X0nb,
+    const scalarField& a,
+    scalar deltaT,
+    scalarField& out,
+    scalarField& W,
+    symmTensorField& S
+) const
+{
+    const surfaceScalarField& aPhi = mixture_.alphaPhiSolid();
+    out = 0;
+    W = 0;
+    S = Zero;
+    vhe_bdonor_internal
+    (
+        r.faces.size(), r.own.cdata(), r.nei.cdata(), a.cdata(),
+        flat(X0), out.data(), W.data(), flat(S)
+    );
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelList& pf = r.patchFaces[patchi];
+        if (pf.empty()) continue;
+        const labelList& pc = r.patchCells[patchi];
+        // Across a coupled patch the donor is the neighbour cell; at any
+        // other boundary the boundary value, zeroGradient (vheElasticity::
+        // patchTypes) or a constraint without flux
+        const symmTensorField Xnb
+        (
+            mesh_.boundary()[patchi].coupled()
+          ? X0nb[patchi]
+          : symmTensorField(X0, pc)
+        );
+        const scalarField& ab = aPhi.boundaryField()[patchi];
+        scalarField ap(pf.size());
+        forAll(pf, i)
+        {
+            ap[i] = deltaT*ab[pf[i]];
+        }
+        vhe_bdonor_boundary
+        (
+            ap.size(), pc.cdata(), ap.cdata(), flat(Xnb), out.data(),
+            W.data(), flat(S)
         );
     }
 }

@@ -1,11 +1,26 @@
 /*---------------------------------------------------------------------------*\
   vheFoam: transport of the deformation B as log B (BTransport log)
+
+  Over the step's solid region only (findRegion): the cells with solid and
+  their neighbours, the faces between them, each patch's faces of region
+  cells.  Every array below has one entry per region cell or face; the
+  neighbours across coupled patches come through neighbourValues.
 \*---------------------------------------------------------------------------*/
 
 #include "BTransport.H"
 #include "vheFlat.H"
 #include "vhe.h"
 #include <cfloat>
+
+namespace
+{
+    //- Values of a mesh field at the given cells or faces
+    template<class Type>
+    Foam::Field<Type> pick(const Foam::UList<Type>& f, const Foam::labelList& l)
+    {
+        return Foam::Field<Type>(f, l);
+    }
+}
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -16,30 +31,41 @@ void Foam::BTransport::advectLog
     scalar deltaT
 ) const
 {
-    const volScalarField& phis = mixture_.phis();
-    const volScalarField& phis0 = phis.oldTime();
+    const volScalarField& phisField = mixture_.phis();
     const scalar phisMin = mixture_.solidFractionMin();
-    const label nCells = mesh_.nCells();
-    const label nIntFaces = mesh_.nInternalFaces();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-
     workspace& w = work();
-    const surfaceScalarField& aPhi = mixture_.alphaPhiSolid();
-    scalarField& a = w.a;
-    forAll(a, facei)
+    solidRegion r;
+    findRegion(r);
+    const label n = r.cells.size();
+    const label nf = r.faces.size();
+    const symmTensor huge(symmTensor::one*HUGE_VAL);
+
+    // The region's cells and faces
+    const scalarField phis0(pick(phisField.oldTime().primitiveField(), r.cells));
+    const scalarField phis(pick(phisField.primitiveField(), r.cells));
+    const vectorField C(pick(mesh_.C().primitiveField(), r.cells));
+    const vectorField Uc(pick(U.primitiveField(), r.cells));
+    scalarField a(pick(mixture_.alphaPhiSolid().primitiveField(), r.faces));
+    a *= deltaT;
+    vectorField delta(nf);
+    forAll(delta, i)
     {
-        a[facei] = deltaT*aPhi[facei];
+        delta[i] = C[r.nei[i]] - C[r.own[i]];
+    }
+    // Each cell's eigenvectors of B, from the last step
+    scalarField V(9*n);
+    forAll(r.cells, i)
+    {
+        for (direction k = 0; k < 9; ++k) V[9*i + k] = w.V[9*r.cells[i] + k];
     }
 
     // Psi = log B of the old step
-    volSymmTensorField& Psi0 = w.Psi0();
+    symmTensorField Psi0(n);
     {
+        const symmTensorField B0(pick(Bstar.oldTime().primitiveField(), r.cells));
         const size_t bad = vhe_logb_from_bstar
         (
-            nCells, phis0.primitiveField().cdata(),
-            flat(Bstar.oldTime().primitiveField()), phisMin,
-            flat(Psi0.primitiveFieldRef()), w.V.data()
+            n, phis0.cdata(), flat(B0), phisMin, flat(Psi0), V.data()
         );
         const label nBad = returnReduce(label(bad), sumOp<label>());
         if (nBad)
@@ -50,241 +76,216 @@ void Foam::BTransport::advectLog
                 << endl;
         }
     }
-    Psi0.correctBoundaryConditions();
+    List<symmTensorField> Psi0nb;
+    neighbourValues(r, Psi0, symmTensor::zero, Psi0nb);
 
     // Low order: donor-cell Psi and solid content m of every cell
-    scalarField& m = w.m;
-    symmTensorField& X = w.X;
+    scalarField m(n);
+    symmTensorField X(n);
     {
-        scalarField& out = w.out;
-        scalarField& W = w.W;
-        symmTensorField& S = w.S;
-        donorSums(Psi0, a, deltaT, out, W, S);
+        scalarField out(n), W(n);
+        symmTensorField S(n);
+        donorSums(r, Psi0, Psi0nb, a, deltaT, out, W, S);
         reportFlushed
         (
             vhe_donor_finish
             (
-                nCells, mesh_.V().cdata(), phis0.primitiveField().cdata(),
-                phis.primitiveField().cdata(), flat(Psi0.primitiveField()),
-                out.cdata(), W.cdata(), flat(S), phisMin, m.data(), flat(X)
+                n, pick(mesh_.V().field(), r.cells).cdata(), phis0.cdata(),
+                phis.cdata(), flat(Psi0), out.cdata(), W.cdata(), flat(S),
+                phisMin, m.data(), flat(X)
             )
         );
     }
 
-    // Least-squares gradient of Psi0 between cells with solid
-    const surfaceVectorField& delta = w.delta();
-    scalarField& G = w.G;
-    {
-        // M and b are 0 on entry: the workspace starts so, and the
-        // finish kernel sets them back
-        symmTensorField& M = w.M;
-        scalarField& b = w.b;
-        vhe_lsq_grad_internal
-        (
-            nIntFaces, own.cdata(), nei.cdata(), flat(delta.primitiveField()),
-            phis0.primitiveField().cdata(), phisGradient_,
-            flat(Psi0.primitiveField()), flat(M), b.data()
-        );
-        forAll(mesh_.boundary(), patchi)
-        {
-            const fvPatchSymmTensorField& Pp = Psi0.boundaryField()[patchi];
-            if (!Pp.coupled() || Pp.empty()) continue;
-            const symmTensorField Pnb(Pp.patchNeighbourField());
-            const scalarField phisNb
-            (
-                phis0.boundaryField()[patchi].patchNeighbourField()
-            );
-            vhe_lsq_grad_boundary
-            (
-                Pp.size(), mesh_.boundary()[patchi].faceCells().cdata(),
-                flat(delta.boundaryField()[patchi]),
-                phis0.primitiveField().cdata(), phisNb.cdata(),
-                phisGradient_, flat(Psi0.primitiveField()), flat(Pnb),
-                flat(M), b.data()
-            );
-        }
-        vhe_lsq_grad_finish(nCells, flat(M), b.data(), G.data());
-    }
-
-    // The gradient's three directions as fields, for coupled neighbours
-    const bool coupled = w.coupled;
-    PtrList<volSymmTensorField>& Gd = w.Gd;
-    for (direction d = 0; d < Gd.size(); ++d)
-    {
-        symmTensorField& g = Gd[d].primitiveFieldRef();
-        forAll(g, celli)
-        {
-            for (direction k = 0; k < 6; ++k)
-            {
-                g[celli][k] = G[18*celli + 6*d + k];
-            }
-        }
-        Gd[d].correctBoundaryConditions();
-    }
-
-    // Antidiffusive fluxes, internal and coupled faces
-    symmTensorField& A = w.A;
-    vhe_antidiffusive_internal
-    (
-        nIntFaces, own.cdata(), nei.cdata(), a.cdata(),
-        flat(mesh_.Sf().primitiveField()), flat(delta.primitiveField()),
-        flat(mesh_.Cf().primitiveField()), flat(mesh_.C().primitiveField()),
-        flat(U.primitiveField()), phis0.primitiveField().cdata(),
-        phisGradient_, flat(Psi0.primitiveField()), G.cdata(), deltaT,
-        flat(A)
-    );
-    PtrList<symmTensorField> Ab(mesh_.boundary().size());
+    // The old phi_s and the velocity across coupled patches
+    List<scalarField> phisNb(mesh_.boundary().size());
+    List<vectorField> UNb(mesh_.boundary().size());
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& p = mesh_.boundary()[patchi];
-        Ab.set(patchi, new symmTensorField(p.size(), Zero));
         if (!p.coupled() || !p.size()) continue;
-        const scalarField ap(deltaT*aPhi.boundaryField()[patchi]);
-        const vectorField Unb(U.boundaryField()[patchi].patchNeighbourField());
-        const scalarField phisNb
+        const labelList& pf = r.patchFaces[patchi];
+        phisNb[patchi] = scalarField
         (
-            phis0.boundaryField()[patchi].patchNeighbourField()
+            phisField.oldTime().boundaryField()[patchi].patchNeighbourField(),
+            pf
         );
-        const symmTensorField Pnb
+        UNb[patchi] = vectorField
         (
-            Psi0.boundaryField()[patchi].patchNeighbourField()
+            U.boundaryField()[patchi].patchNeighbourField(), pf
         );
-        scalarField Gnb(18*p.size());
-        for (direction d = 0; d < 3; ++d)
+    }
+
+    // Least-squares gradient of Psi0 between cells with solid
+    scalarField G(18*n);
+    {
+        symmTensorField M(n, Zero);
+        scalarField b(18*n, Zero);
+        vhe_lsq_grad_internal
+        (
+            nf, r.own.cdata(), r.nei.cdata(), flat(delta), phis0.cdata(),
+            phisGradient_, flat(Psi0), flat(M), b.data()
+        );
+        forAll(mesh_.boundary(), patchi)
         {
-            const symmTensorField g
+            const labelList& pf = r.patchFaces[patchi];
+            if (!mesh_.boundary()[patchi].coupled() || pf.empty()) continue;
+            const vectorField d
             (
-                Gd[d].boundaryField()[patchi].patchNeighbourField()
+                pick(mesh_.boundary()[patchi].delta()(), pf)
             );
-            forAll(g, facei)
+            vhe_lsq_grad_boundary
+            (
+                pf.size(), r.patchCells[patchi].cdata(), flat(d),
+                phis0.cdata(), phisNb[patchi].cdata(), phisGradient_,
+                flat(Psi0), flat(Psi0nb[patchi]), flat(M), b.data()
+            );
+        }
+        vhe_lsq_grad_finish(n, flat(M), b.data(), G.data());
+    }
+
+    // The gradient's three directions across coupled patches
+    List<scalarField> GNb(mesh_.boundary().size());
+    for (direction d = 0; d < 3 && w.coupled; ++d)
+    {
+        symmTensorField g(n);
+        forAll(g, i)
+        {
+            for (direction k = 0; k < 6; ++k) g[i][k] = G[18*i + 6*d + k];
+        }
+        List<symmTensorField> gNb;
+        neighbourValues(r, g, symmTensor::zero, gNb);
+        forAll(gNb, patchi)
+        {
+            if (gNb[patchi].empty()) continue;
+            scalarField& Gp = GNb[patchi];
+            Gp.setSize(18*gNb[patchi].size());
+            forAll(gNb[patchi], i)
             {
                 for (direction k = 0; k < 6; ++k)
                 {
-                    Gnb[18*facei + 6*d + k] = g[facei][k];
+                    Gp[18*i + 6*d + k] = gNb[patchi][i][k];
                 }
             }
         }
+    }
+
+    // Antidiffusive fluxes, internal and coupled faces
+    symmTensorField A(nf);
+    vhe_antidiffusive_internal
+    (
+        nf, r.own.cdata(), r.nei.cdata(), a.cdata(),
+        flat(pick(mesh_.Sf().primitiveField(), r.faces)), flat(delta),
+        flat(pick(mesh_.Cf().primitiveField(), r.faces)), flat(C),
+        flat(Uc), phis0.cdata(), phisGradient_, flat(Psi0), G.cdata(),
+        deltaT, flat(A)
+    );
+    List<symmTensorField> Ab(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        const labelList& pf = r.patchFaces[patchi];
+        Ab[patchi].setSize(pf.size(), Zero);
+        if (!p.coupled() || pf.empty()) continue;
+        scalarField ap(pick(mixture_.alphaPhiSolid().boundaryField()[patchi], pf));
+        ap *= deltaT;
         vhe_antidiffusive_boundary
         (
-            p.size(), p.faceCells().cdata(), ap.cdata(),
-            flat(mesh_.Sf().boundaryField()[patchi]),
-            flat(delta.boundaryField()[patchi]),
-            flat(mesh_.Cf().boundaryField()[patchi]),
-            flat(mesh_.C().primitiveField()), flat(U.primitiveField()),
-            phis0.primitiveField().cdata(), phisNb.cdata(), phisGradient_,
-            flat(Psi0.primitiveField()), flat(Pnb), flat(Unb), G.cdata(),
-            Gnb.cdata(), deltaT, flat(Ab[patchi])
+            pf.size(), r.patchCells[patchi].cdata(), ap.cdata(),
+            flat(pick(mesh_.Sf().boundaryField()[patchi], pf)),
+            flat(pick(p.delta()(), pf)),
+            flat(pick(mesh_.Cf().boundaryField()[patchi], pf)),
+            flat(C), flat(Uc), phis0.cdata(), phisNb[patchi].cdata(),
+            phisGradient_, flat(Psi0), flat(Psi0nb[patchi]),
+            flat(UNb[patchi]), G.cdata(), GNb[patchi].cdata(), deltaT,
+            flat(Ab[patchi])
         );
     }
 
     // Local extrema of the old and low-order Psi
-    volSymmTensorField& Emin = w.Emin();
-    volSymmTensorField& Emax = w.Emax();
+    symmTensorField Emin(n), Emax(n);
     vhe_fct_extrema_init
     (
-        nCells, phis0.primitiveField().cdata(), flat(Psi0.primitiveField()),
-        m.cdata(), flat(X), phisMin, flat(Emin.primitiveFieldRef()),
-        flat(Emax.primitiveFieldRef())
+        n, phis0.cdata(), flat(Psi0), m.cdata(), flat(X), phisMin,
+        flat(Emin), flat(Emax)
     );
-    if (coupled)
-    {
-        Emin.correctBoundaryConditions();
-        Emax.correctBoundaryConditions();
-    }
-    symmTensorField& Xmin = w.Xmin;
-    symmTensorField& Xmax = w.Xmax;
-    Xmin = Emin.primitiveField();
-    Xmax = Emax.primitiveField();
+    List<symmTensorField> EminNb, EmaxNb;
+    neighbourValues(r, Emin, huge, EminNb);
+    neighbourValues(r, Emax, -huge, EmaxNb);
+    symmTensorField Xmin(Emin), Xmax(Emax);
     vhe_fct_extrema_internal
     (
-        nIntFaces, own.cdata(), nei.cdata(), flat(Emin.primitiveField()),
-        flat(Emax.primitiveField()), flat(Xmin), flat(Xmax)
+        nf, r.own.cdata(), r.nei.cdata(), flat(Emin), flat(Emax),
+        flat(Xmin), flat(Xmax)
     );
 
     // Zalesak's ratios
-    volSymmTensorField& Rp = w.Rp();
-    volSymmTensorField& Rm = w.Rm();
-    Rp.primitiveFieldRef() = Zero;
-    Rm.primitiveFieldRef() = Zero;
+    symmTensorField Rp(n, Zero), Rm(n, Zero);
     vhe_fct_sums_internal
     (
-        nIntFaces, own.cdata(), nei.cdata(), flat(A),
-        flat(Rp.primitiveFieldRef()), flat(Rm.primitiveFieldRef())
+        nf, r.own.cdata(), r.nei.cdata(), flat(A), flat(Rp), flat(Rm)
     );
     forAll(mesh_.boundary(), patchi)
     {
-        const fvPatch& p = mesh_.boundary()[patchi];
-        if (!p.coupled() || !p.size()) continue;
-        const symmTensorField EminNb
-        (
-            Emin.boundaryField()[patchi].patchNeighbourField()
-        );
-        const symmTensorField EmaxNb
-        (
-            Emax.boundaryField()[patchi].patchNeighbourField()
-        );
+        const labelList& pf = r.patchFaces[patchi];
+        if (!mesh_.boundary()[patchi].coupled() || pf.empty()) continue;
+        const labelList& pc = r.patchCells[patchi];
         vhe_fct_extrema_boundary
         (
-            p.size(), p.faceCells().cdata(), flat(EminNb), flat(EmaxNb),
-            flat(Xmin), flat(Xmax)
+            pf.size(), pc.cdata(), flat(EminNb[patchi]),
+            flat(EmaxNb[patchi]), flat(Xmin), flat(Xmax)
         );
         vhe_fct_sums_boundary
         (
-            p.size(), p.faceCells().cdata(), flat(Ab[patchi]),
-            flat(Rp.primitiveFieldRef()), flat(Rm.primitiveFieldRef())
+            pf.size(), pc.cdata(), flat(Ab[patchi]), flat(Rp), flat(Rm)
         );
     }
     vhe_fct_ratios
     (
-        nCells, m.cdata(), flat(X), flat(Xmin), flat(Xmax),
-        flat(Rp.primitiveFieldRef()), flat(Rm.primitiveFieldRef())
+        n, m.cdata(), flat(X), flat(Xmin), flat(Xmax), flat(Rp), flat(Rm)
     );
-    if (coupled)
-    {
-        Rp.correctBoundaryConditions();
-        Rm.correctBoundaryConditions();
-    }
+    const symmTensor one(symmTensor::one);
+    List<symmTensorField> RpNb, RmNb;
+    neighbourValues(r, Rp, one, RpNb);
+    neighbourValues(r, Rm, one, RmNb);
 
     // Limited antidiffusion on the low-order content m Psi
-    symmTensorField& mX = w.mX;
-    forAll(mX, celli)
+    symmTensorField mX(n);
+    forAll(mX, i)
     {
-        mX[celli] = m[celli]*X[celli];
+        mX[i] = m[i]*X[i];
     }
     vhe_fct_apply_internal
     (
-        nIntFaces, own.cdata(), nei.cdata(), flat(A),
-        flat(Rp.primitiveField()), flat(Rm.primitiveField()), flat(mX)
+        nf, r.own.cdata(), r.nei.cdata(), flat(A), flat(Rp), flat(Rm),
+        flat(mX)
     );
     forAll(mesh_.boundary(), patchi)
     {
-        const fvPatch& p = mesh_.boundary()[patchi];
-        if (!p.coupled() || !p.size()) continue;
-        const symmTensorField RpNb
-        (
-            Rp.boundaryField()[patchi].patchNeighbourField()
-        );
-        const symmTensorField RmNb
-        (
-            Rm.boundaryField()[patchi].patchNeighbourField()
-        );
+        const labelList& pf = r.patchFaces[patchi];
+        if (!mesh_.boundary()[patchi].coupled() || pf.empty()) continue;
         vhe_fct_apply_boundary
         (
-            p.size(), p.faceCells().cdata(), flat(Ab[patchi]),
-            flat(Rp.primitiveField()), flat(Rm.primitiveField()),
-            flat(RpNb), flat(RmNb), flat(mX)
+            pf.size(), r.patchCells[patchi].cdata(), flat(Ab[patchi]),
+            flat(Rp), flat(Rm), flat(RpNb[patchi]), flat(RmNb[patchi]),
+            flat(mX)
         );
     }
-    forAll(X, celli)
+    forAll(X, i)
     {
-        if (m[celli] > 0) X[celli] = mX[celli]/m[celli];
+        if (m[i] > 0) X[i] = mX[i]/m[i];
     }
 
-    vhe_bstar_from_logb
-    (
-        nCells, phis.primitiveField().cdata(), flat(X), phisMin,
-        flat(Bstar.primitiveFieldRef()), w.V.data()
-    );
+    // B* of the new step: 0 outside the region (no solid there)
+    symmTensorField Bs(n);
+    vhe_bstar_from_logb(n, phis.cdata(), flat(X), phisMin, flat(Bs), V.data());
+    symmTensorField& B = Bstar.primitiveFieldRef();
+    B = Zero;
+    forAll(r.cells, i)
+    {
+        B[r.cells[i]] = Bs[i];
+        for (direction k = 0; k < 9; ++k) w.V[9*r.cells[i] + k] = V[9*i + k];
+    }
 }
 
 
