@@ -173,26 +173,36 @@ void Foam::vheMixture::limitFluxes
     // sum correction below takes them out once all are >= 0.  The last
     // check's update is the step's (without re-limiting, the update is
     // not checked).
+    // Only the fields that fell below are limited again: limiting a field
+    // within its bounds returns its correction unchanged (four fields in
+    // the four-sphere case, one of them out a step: 8 limiter passes a
+    // step became 5)
     alphaNew.setSize(n);
     for (label iter = 0; ; ++iter)
     {
-        scalar lo = GREAT;
+        boolList below(n, false);
+        bool any = false;
         for (label i = 0; i < n; ++i)
         {
             alphaNew.set(i, update(i).ptr());
-            lo = min(lo, min(alphaNew[i]));
+            below[i] =
+                returnReduce(min(alphaNew[i]), minOp<scalar>()) < -1e-9;
+            any = any || below[i];
         }
-        if
-        (
-            iter == nLimitSumIter
-         || returnReduce(lo, minOp<scalar>()) >= -1e-9
-        )
+        if (iter == nLimitSumIter || !any)
         {
             break;
         }
         for (label i = 0; i < n; ++i)
         {
-            limitCorrection(i);
+            if (below[i])
+            {
+                limitCorrection(i);
+            }
+            else
+            {
+                alphaPhis[i] -= alphaPhiUDs[i];
+            }
         }
         MULES::limitSum(alphaPhis);
         for (label i = 0; i < n; ++i)
