@@ -188,45 +188,6 @@ void Foam::vheElasticity::advect(const volVectorField& U, scalar deltaT)
 }
 
 
-void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
-{
-    // The flow is incompressible, but the cell gradient of U (interpolated
-    // from cell values) is not exactly traceless, least of all where the
-    // velocity changes fast (a heavy body hitting a wall): stretch with its
-    // deviatoric part, so that det(F) = 1 and det B stays 1.  (dev, not the
-    // trace over the solved directions only: the stress increment that the
-    // semi-implicit momentum equation takes, Ghat phi_s dt (L + L^T -
-    // 2/3 tr(L) I), is then exactly the increment of the stretched B*.)
-    volTensorField gradU(velocityGradient(U, deltaT));
-    gradU.primitiveFieldRef() = dev(gradU.primitiveField());
-    if (!backward_)
-    {
-        vhe_stretch
-        (
-            mesh_.nCells(), deltaT, flat(gradU.primitiveField()),
-            flat(Bstar_.primitiveFieldRef())
-        );
-        return;
-    }
-    // BDF2: B* - tau (L B* + B* L^T) = B*_advected + carry x the last
-    // step's increment (the constant-step form: 3 B^(n+1) - 4 B^n +
-    // B^(n-1) = 2 dt (L B + B L^T)^(n+1), B^n here already advected)
-    const symmTensorField advected(Bstar_.primitiveField());
-    const symmTensorField Bhat(predictorBstar());
-    const size_t singular = vhe_stretch_implicit
-    (
-        mesh_.nCells(), stressStep(deltaT), flat(gradU.primitiveField()),
-        flat(Bhat), flat(Bstar_.primitiveFieldRef())
-    );
-    const label nSingular = returnReduce(label(singular), sumOp<label>());
-    if (nSingular)
-    {
-        WarningInFunction
-            << nSingular << " cells with a singular BDF2 stretch (velocity"
-            << " gradient x time step too large): B* kept" << endl;
-    }
-    increment_->primitiveFieldRef() = Bstar_.primitiveField() - advected;
-}
 void Foam::vheElasticity::clip()
 {
     vhe_clip_fluid
