@@ -19,6 +19,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include <malloc.h>
 #include "fvCFD.H"
 #include "dynamicFvMesh.H"
 #include "vheRefineFvMesh.H"
@@ -48,6 +49,7 @@ int main(int argc, char *argv[])
         " (phase-averaged full Eulerian model) on a fixed mesh."
     );
 
+    #include "mallocTuning.H"
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
