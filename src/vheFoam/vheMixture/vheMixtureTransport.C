@@ -173,36 +173,26 @@ void Foam::vheMixture::limitFluxes
     // sum correction below takes them out once all are >= 0.  The last
     // check's update is the step's (without re-limiting, the update is
     // not checked).
-    // Only the fields that fell below are limited again: limiting a field
-    // within its bounds returns its correction unchanged (four fields in
-    // the four-sphere case, one of them out a step: 8 limiter passes a
-    // step became 5)
     alphaNew.setSize(n);
     for (label iter = 0; ; ++iter)
     {
-        boolList below(n, false);
-        bool any = false;
+        scalar lo = GREAT;
         for (label i = 0; i < n; ++i)
         {
             alphaNew.set(i, update(i).ptr());
-            below[i] =
-                returnReduce(min(alphaNew[i]), minOp<scalar>()) < -1e-9;
-            any = any || below[i];
+            lo = min(lo, min(alphaNew[i]));
         }
-        if (iter == nLimitSumIter || !any)
+        if
+        (
+            iter == nLimitSumIter
+         || returnReduce(lo, minOp<scalar>()) >= -1e-9
+        )
         {
             break;
         }
         for (label i = 0; i < n; ++i)
         {
-            if (below[i])
-            {
-                limitCorrection(i);
-            }
-            else
-            {
-                alphaPhis[i] -= alphaPhiUDs[i];
-            }
+            limitCorrection(i);
         }
         MULES::limitSum(alphaPhis);
         for (label i = 0; i < n; ++i)
