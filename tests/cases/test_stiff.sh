@@ -34,7 +34,7 @@ lastQ() { awk '!/^#/{q = -$2} END {print q}' "$WORK/$1/postProcessing/flowRate/0
 
 # Q is 1.7 % above the explicit variant's, and not from the splitting of
 # the prediction and the projection: the semi-implicit run iterates them to
-# their coupled solution (stepCoupling, 5.9 passes a step) and Q moves by
+# their coupled solution (stepCoupling, 2.4 passes a step; Co_e 6.4) and Q moves by
 # 2e-5 against one pass.  The cause is the projection's Rhie-Chow damping,
 # dt (a_f - interpolated a_c) on every face: liquid leaks past the disks'
 # edges in proportion to the step (the explicit variant's step is 12 times
