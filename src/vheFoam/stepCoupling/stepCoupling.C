@@ -58,9 +58,14 @@ void Foam::stepCoupling::start
     // the first updates of this step already act on them (Couette disk at
     // viscous number 1000: 13 passes a step against 20; at 10, 16 against
     // 15).  They go when a step was not iterated or the mesh changed.
-    const bool keep =
+    // (decided on all ranks together: a refinement may change some only,
+    // and every rank must keep as many differences for the sums)
+    const bool keep = returnReduce
+    (
         on && on_ && dFU_.size() && dFU_[0].size() == U.size()
-     && !mesh_.changing();
+     && !mesh_.changing(),
+        andOp<bool>()
+    );
     on_ = on;
     iter_ = 0;
     change_ = 0;
