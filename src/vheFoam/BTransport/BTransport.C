@@ -112,46 +112,6 @@ void Foam::BTransport::advect
 
 void Foam::BTransport::donorSums
 (
-    const volSymmTensorField& X0,
-    const scalarField& a,
-    scalar deltaT,
-    scalarField& out,
-    scalarField& W,
-    symmTensorField& S
-) const
-{
-    const surfaceScalarField& aPhi = mixture_.alphaPhiSolid();
-    out = 0;
-    W = 0;
-    S = Zero;
-    vhe_bdonor_internal
-    (
-        mesh_.nInternalFaces(), mesh_.owner().cdata(),
-        mesh_.neighbour().cdata(), a.cdata(), flat(X0.primitiveField()),
-        out.data(), W.data(), flat(S)
-    );
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatchSymmTensorField& Xp = X0.boundaryField()[patchi];
-        if (Xp.empty()) continue;
-        // Across a coupled patch the donor is the neighbour cell; at any
-        // other boundary, the boundary value
-        const symmTensorField Xnb
-        (
-            Xp.coupled() ? Xp.patchNeighbourField()() : symmTensorField(Xp)
-        );
-        const scalarField ap(deltaT*aPhi.boundaryField()[patchi]);
-        vhe_bdonor_boundary
-        (
-            ap.size(), mesh_.boundary()[patchi].faceCells().cdata(),
-            ap.cdata(), flat(Xnb), out.data(), W.data(), flat(S)
-        );
-    }
-}
-
-
-void Foam::BTransport::donorSums
-(
     const solidRegion& r,
     const symmTensorField& X0,
     const List<symmTensorField>& X0nb,
@@ -218,39 +178,49 @@ void Foam::BTransport::advectDonorB
     scalar deltaT
 ) const
 {
+    // Over the step's solid region, as the log transport: a cell outside
+    // it has no solid and no neighbour with solid, so B* = 0 there
     const volScalarField& phis = mixture_.phis();
-    const volScalarField& phis0 = phis.oldTime();
     const scalar phisMin = mixture_.solidFractionMin();
-    const label nCells = mesh_.nCells();
+    work();
+    solidRegion r;
+    findRegion(r);
+    const label n = r.cells.size();
+    const scalarField phis0(phis.oldTime().primitiveField(), r.cells);
 
     // Old B of the solid; I where there is none
-    tmp<volSymmTensorField> tB0(field("B"));
-    volSymmTensorField& B0 = tB0.ref();
+    symmTensorField B0(n);
     vhe_b_from_bstar
     (
-        nCells, phis0.primitiveField().cdata(),
-        flat(Bstar.oldTime().primitiveField()), phisMin,
-        flat(B0.primitiveFieldRef())
+        n, phis0.cdata(),
+        flat(symmTensorField(Bstar.oldTime().primitiveField(), r.cells)),
+        phisMin, flat(B0)
     );
-    B0.correctBoundaryConditions();
+    List<symmTensorField> B0nb;
+    neighbourValues(r, B0, symmTensor::I, B0nb);
 
-    scalarField out(nCells), W(nCells);
-    symmTensorField S(nCells);
-    donorSums
-    (
-        B0, scalarField(deltaT*mixture_.alphaPhiSolid().primitiveField()),
-        deltaT, out, W, S
-    );
+    scalarField a(mixture_.alphaPhiSolid().primitiveField(), r.faces);
+    a *= deltaT;
+    scalarField out(n), W(n);
+    symmTensorField S(n);
+    donorSums(r, B0, B0nb, a, deltaT, out, W, S);
+    symmTensorField Bs(n);
     reportFlushed
     (
         vhe_bdonor_finish
         (
-            nCells, mesh_.V().cdata(), phis0.primitiveField().cdata(),
-            phis.primitiveField().cdata(), flat(B0.primitiveField()),
-            out.cdata(), W.cdata(), flat(S), phisMin,
-            flat(Bstar.primitiveFieldRef())
+            n, scalarField(mesh_.V().field(), r.cells).cdata(),
+            phis0.cdata(),
+            scalarField(phis.primitiveField(), r.cells).cdata(), flat(B0),
+            out.cdata(), W.cdata(), flat(S), phisMin, flat(Bs)
         )
     );
+    symmTensorField& B = Bstar.primitiveFieldRef();
+    B = Zero;
+    forAll(r.cells, i)
+    {
+        B[r.cells[i]] = Bs[i];
+    }
 }
 
 
