@@ -26,6 +26,7 @@ VOLUME_TOL = 1e-6     # relative drift of every phase volume
 EIG_TOL = -1e-9       # B* positive semi-definite
 DET_TOL = 1e-8        # |det B - 1| in solid cells (phi_s > 0.5): log B is
                       # carried, det B = 1 up to round-off
+ENERGY_FLOOR = 1e-30  # [J] round-off: speeds of 1e-15 m/s in the unit box
 ENERGY_TOL = 1e-6     # growth of total energy between writes, relative to
                       # the largest kinetic + elastic energy (closed,
                       # undriven boxes only: a file "closedUndriven" in the
@@ -70,7 +71,9 @@ def evaluate(case):
             balance.append(c[10])
     closed = os.path.exists(os.path.join(case, "closedUndriven"))
     growth = gain = ""
-    if closed and scale > 0 and len(total) > 1:
+    if closed and len(total) > 1:
+        # a body at rest (scale at round-off) is judged against the floor
+        scale = max(scale, ENERGY_FLOOR)
         growth = max(0.0, max(b - a for a, b in zip(total, total[1:]))) / scale
         gain = max(0.0, max(b - balance[0] for b in balance)) / scale
     seconds = open(os.path.join(case, "time")).read().strip() \

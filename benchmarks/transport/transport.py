@@ -106,19 +106,15 @@ def evaluate(case, flow, scheme, n, time):
     p0, p1 = alpha(case, 0, nc), alpha(case, time, nc)
     area = math.pi * DISKS[flow][1] ** 2
     ephi = sum(abs(a - b) for a, b in zip(p0, p1)) * V / area
-    # isoAdvector carries phi_s alone: no B
-    iso = scheme == "isoAdvector"
-    eB = ","
-    if not iso:
-        l1, emax = b_errors(case, time, C, p0, p1, flow, V)
-        eB = f"{l1:.4e},{emax:.4e}"
+    l1, emax = b_errors(case, time, C, p0, p1, flow, V)
+    eB = f"{l1:.4e},{emax:.4e}"
     drift = 0.0
     diag = f"{case}/postProcessing/solidDiagnostics/0/solidDiagnostics.dat"
     if os.path.exists(diag):
         for line in open(diag):
             if line.strip() and not line.startswith("#"):
                 drift = max(drift, float(line.split()[4]))
-    log = open(f"{case}/log.{'isoTransport' if iso else 'vheFoam'}").read()
+    log = open(f"{case}/log.vheFoam").read()
     wall = re.findall(r"ExecutionTime = (\S+) s", log)
     print(f"{flow},{scheme},{n},{ephi:.4e},{eB},"
           f"{drift:.3e},{wall[-1] if wall else ''}")

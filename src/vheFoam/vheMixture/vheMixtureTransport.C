@@ -35,6 +35,7 @@ void Foam::vheMixture::checkSchemes() const
 void Foam::vheMixture::alphaFluxes
 (
     const transported& t,
+    const surfaceScalarField& carrier,
     scalar cAlpha,
     PtrList<surfaceScalarField>& alphaPhis
 ) const
@@ -42,7 +43,7 @@ void Foam::vheMixture::alphaFluxes
     const word alphaScheme("div(phi,alpha)");
     const label n = t.size();
 
-    surfaceScalarField phic(mag(phi_/mesh_.magSf()));
+    surfaceScalarField phic(mag(carrier/mesh_.magSf()));
     phic = min(cAlpha*phic, max(phic));
 
     // Each field's high-order flux, then the interface compression of
@@ -59,7 +60,7 @@ void Foam::vheMixture::alphaFluxes
             new surfaceScalarField
             (
                 "alphaPhi." + t.fields[i].name(),
-                fvc::flux(phi_, t.fields[i], alphaScheme)
+                fvc::flux(carrier, t.fields[i], alphaScheme)
             )
         );
         af.set(i, fvc::interpolate(t.fields[i]));
@@ -220,7 +221,7 @@ void Foam::vheMixture::solveAlphaStep
     PtrList<scalarField> alphaNew;
     {
         addProfiling(mules, "vheMixture::MULES");
-        alphaFluxes(t, cAlpha, alphaPhis);
+        alphaFluxes(t, phi_, cAlpha, alphaPhis);
         limitFluxes(t, nLimitSumIter, deltaT, alphaPhis, alphaNew);
     }
 
@@ -314,7 +315,31 @@ void Foam::vheMixture::solve()
         *alphaPhiSolid_ = dimensionedScalar(dimVolume/dimTime, Zero);
     }
 
-    if (nSub == 1)
+    // Solids are carried geometrically (isoAdvector); MULES with
+    // interface compression, as the fluids, is kept as the reference of
+    // benchmarks/transport (solidTransport MULES)
+    const word solidTransport
+    (
+        alphaControls.getOrDefault<word>("solidTransport", "geometric")
+    );
+    if (solidTransport != "geometric" && solidTransport != "MULES")
+    {
+        FatalIOErrorInFunction(alphaControls)
+            << "solidTransport must be geometric or MULES, got '"
+            << solidTransport << "'" << exit(FatalIOError);
+    }
+    bool solids = false;
+    for (const label i : active)
+    {
+        solids = solids || phases_[i].solid;
+    }
+
+    if (solids && solidTransport == "geometric")
+    {
+        // Bodies' outlines are geometry: isoAdvector for the solids
+        solveGeometric(active, cAlpha, nSub);
+    }
+    else if (nSub == 1)
     {
         solveAlphaStep(active, cAlpha, nLimitSumIter, deltaT, 1);
     }

@@ -38,6 +38,7 @@ void Foam::vheMixture::selectTransported
     t.fields.setSize(nMax);
     t.rho.setSize(nMax);
     t.elastic.setSize(nMax);
+    t.solid.setSize(nMax);
     t.carried.setSize(nMax);
     t.sums.setSize(nMax);
     labelList matOf(nMax, -1);          // material (index), -1: a fluid
@@ -49,6 +50,7 @@ void Foam::vheMixture::selectTransported
         t.fields.set(n, f);
         t.rho[n] = ph.rho;
         t.elastic[n] = ph.solid && !ph.rigid;  // B* is carried with elastic solids
+        t.solid[n] = ph.solid;
         matOf[n] = m;
         colOf[n] = c;
         return n++;
@@ -130,6 +132,7 @@ void Foam::vheMixture::selectTransported
     t.fields.setSize(n);
     t.rho.setSize(n);
     t.elastic.setSize(n);
+    t.solid.setSize(n);
     t.carried.setSize(n);
     t.sums.setSize(n);
 

@@ -1,0 +1,391 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: phase-averaged gas/liquid/solid mixture -- the step with
+  solids: each solid fraction carried geometrically (isoAdvector), the
+  fluids as shares of the volume the solids leave
+\*---------------------------------------------------------------------------*/
+
+#include "vheMixture.H"
+#include "solidAdvection.H"
+#include "colourShares.H"
+#include "fvc.H"
+#include "MULES.H"
+#include "upwind.H"
+#include "profiling.H"
+
+// * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
+
+void Foam::vheMixture::spreadOverlaps
+(
+    UPtrList<volScalarField>& fields,
+    UPtrList<surfaceScalarField>& fluxes,
+    const scalar deltaT
+) const
+{
+    // Each solid is carried by isoAdvector alone, as if the rest of every
+    // cell were fluid: where two bodies converge (the liquid between them
+    // squeezed out) their fractions can sum above 1.  The excess of such a
+    // cell goes to its face neighbours that have room (liquid), each
+    // solid's part in proportion to its fraction, as a flux over the shared
+    // face: volumes are kept to round-off and the fluxes (B*, rhoPhi, the
+    // fluids' rest) see the move.  Internal faces only; up to ten sweeps
+    const label nS = fields.size();
+    if (nS < 2) return;
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& V = mesh_.V();
+    const cellList& cells = mesh_.cells();
+    const label nInt = mesh_.nInternalFaces();
+
+    scalarField s(mesh_.nCells(), Zero);
+    for (const volScalarField& a : fields) s += a.primitiveField();
+
+    bool moved = false;
+    for (label sweep = 0; sweep < 10; ++sweep)
+    {
+        label nOver = 0;
+        forAll(s, c)
+        {
+            if (s[c] <= 1 + 1e-14) continue;
+            ++nOver;
+            scalar room = 0;
+            for (const label f : cells[c])
+            {
+                if (f >= nInt) continue;
+                const label n = own[f] == c ? nei[f] : own[f];
+                room += max(1 - s[n], scalar(0))*V[n];
+            }
+            if (room <= 0) continue;
+            const scalar excess = (s[c] - 1)*V[c];
+            const scalar move = min(excess, room);
+            scalarList w(nS);
+            for (label k = 0; k < nS; ++k) w[k] = fields[k][c]/s[c];
+            for (const label f : cells[c])
+            {
+                if (f >= nInt) continue;
+                const label n = own[f] == c ? nei[f] : own[f];
+                const scalar dV = move*max(1 - s[n], scalar(0))*V[n]/room;
+                if (dV <= 0) continue;
+                const scalar sign = own[f] == c ? 1 : -1;
+                for (label k = 0; k < nS; ++k)
+                {
+                    const scalar dVk = dV*w[k];
+                    fields[k].primitiveFieldRef()[c] -= dVk/V[c];
+                    fields[k].primitiveFieldRef()[n] += dVk/V[n];
+                    fluxes[k].primitiveFieldRef()[f] += sign*dVk/deltaT;
+                }
+                s[n] += dV/V[n];
+            }
+            s[c] -= move/V[c];
+            moved = true;
+        }
+        if (nOver == 0) break;
+    }
+    if (returnReduce(moved, orOp<bool>()))
+    {
+        for (volScalarField& a : fields) a.correctBoundaryConditions();
+    }
+}
+
+
+void Foam::vheMixture::fluidShares
+(
+    transported& t,
+    const labelList& fluids,
+    const surfaceScalarField& phiFluid,
+    const scalarField& fluidNew,
+    scalar cAlpha,
+    label nSub,
+    PtrList<surfaceScalarField>& alphaPhis
+)
+{
+    const label nF = fluids.size();
+    if (nF == 0) return;
+
+    if (nF == 1)
+    {
+        // The one fluid fills what the solids leave, on what they leave of
+        // the flux
+        volScalarField& alpha = t.fields[fluids[0]];
+        alpha.oldTime();
+        alpha.primitiveFieldRef() = fluidNew;
+        alpha.correctBoundaryConditions();
+        alphaPhis.set
+        (
+            fluids[0],
+            new surfaceScalarField("alphaPhi." + alpha.name(), phiFluid)
+        );
+        return;
+    }
+
+    addProfiling(shares, "vheMixture::fluidShares");
+
+    // Several fluids: MULES on each fluid's share c_k of the fluid volume,
+    // f c_k = alpha_k, with f as MULES's density and phiFluid its flux:
+    // f_new = f_old - dt div(phiFluid) exactly, so the upwind shares stay
+    // within their neighbours' (where the fluid's outflow does not exceed
+    // the cell's fluid) and the shares sum to 1 on every face.  delta
+    // gives the shares a value (1/nF) where a cell holds no fluid; it is
+    // far below any fraction that matters
+    const scalar delta = 1e-9;
+    const scalar deltaT = mesh_.time().deltaTValue()/nSub;
+
+    scalarField f0(mesh_.nCells(), delta);
+    for (const label i : fluids)
+    {
+        f0 += t.fields[i].oldTime().primitiveField();
+    }
+    const scalarField divF(fvc::surfaceIntegrate(phiFluid)().primitiveField());
+
+    volScalarField f
+    (
+        IOobject
+        (
+            "fluidFraction", mesh_.time().timeName(), mesh_,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        mesh_,
+        dimensionedScalar(dimless, Zero)
+    );
+    f.oldTime();
+
+    PtrList<volScalarField> c(nF);
+    PtrList<surfaceScalarField> phiSum(nF);
+    forAll(fluids, k)
+    {
+        const volScalarField& a = t.fields[fluids[k]];
+        wordList types(a.boundaryField().types());
+        forAll(types, patchi)
+        {
+            if (!a.boundaryField()[patchi].coupled())
+            {
+                types[patchi] = calculatedFvPatchScalarField::typeName;
+            }
+        }
+        c.set
+        (
+            k,
+            new volScalarField
+            (
+                IOobject
+                (
+                    a.name() + ".share", mesh_.time().timeName(), mesh_,
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                mesh_,
+                dimensionedScalar(dimless, Zero),
+                types
+            )
+        );
+        c[k].primitiveFieldRef() =
+            (a.oldTime().primitiveField() + delta/nF)/f0;
+        forAll(mesh_.boundary(), patchi)
+        {
+            if (a.boundaryField()[patchi].coupled()) continue;
+            scalarField fb(a.boundaryField()[patchi].size(), delta);
+            for (const label i : fluids)
+            {
+                fb += t.fields[i].oldTime().boundaryField()[patchi];
+            }
+            c[k].boundaryFieldRef()[patchi] ==
+                (a.oldTime().boundaryField()[patchi] + delta/nF)/fb;
+        }
+        c[k].correctBoundaryConditions();
+        c[k].oldTime();
+        phiSum.set
+        (
+            k,
+            new surfaceScalarField
+            (
+                "alphaPhi." + a.name(), 0*phiFluid
+            )
+        );
+    }
+
+    transported ts;
+    ts.fields.setSize(nF);
+    forAll(c, k) ts.fields.set(k, &c[k]);
+    ts.pairOn = List<bool>(nF*(nF - 1)/2, true);
+
+    for (label s = 0; s < nSub; ++s)
+    {
+        f.oldTime().primitiveFieldRef() = f0 - s*deltaT*divF;
+        f.primitiveFieldRef() = f0 - (s + 1)*deltaT*divF;
+        if (s > 0)
+        {
+            for (volScalarField& ck : c) ck.oldTime() == ck;
+        }
+
+        PtrList<surfaceScalarField> cPhis;
+        alphaFluxes(ts, phiFluid, cAlpha, cPhis);
+        forAll(c, k)
+        {
+            MULES::limit
+            (
+                1.0/deltaT, f, c[k], phiFluid, cPhis[k],
+                zeroField(), zeroField(), oneField(), zeroField(), true
+            );
+        }
+        MULES::limitSum(cPhis);
+        const scalarField& fOld = f.oldTime().primitiveField();
+        const scalarField& fNew = f.primitiveField();
+        forAll(c, k)
+        {
+            cPhis[k] += upwind<scalar>(mesh_, phiFluid).flux(c[k]);
+            const scalarField& c0 = c[k].oldTime().primitiveField();
+            const scalarField fc
+            (
+                fOld*c0
+              - deltaT*fvc::surfaceIntegrate(cPhis[k])().primitiveField()
+            );
+            scalarField& ck = c[k].primitiveFieldRef();
+            forAll(ck, celli)
+            {
+                // a cell the step empties of fluid keeps its shares
+                ck[celli] =
+                    fNew[celli] > delta ? fc[celli]/fNew[celli] : c0[celli];
+            }
+            c[k].correctBoundaryConditions();
+            phiSum[k] += cPhis[k]/scalar(nSub);
+        }
+    }
+
+    // The fractions: the shares (within [0, 1], summing to 1) of what the
+    // solids leave
+    scalarField sumC(mesh_.nCells(), Zero);
+    for (volScalarField& ck : c)
+    {
+        ck.primitiveFieldRef() = min(max(ck.primitiveField(), scalar(0)), 1.0);
+        sumC += ck.primitiveField();
+    }
+    forAll(fluids, k)
+    {
+        volScalarField& alpha = t.fields[fluids[k]];
+        const scalarField& ck = c[k].primitiveField();
+        scalarField& a = alpha.primitiveFieldRef();
+        forAll(a, celli)
+        {
+            a[celli] = sumC[celli] > 0
+              ? fluidNew[celli]*ck[celli]/sumC[celli]
+              : fluidNew[celli]/nF;
+        }
+        alpha.correctBoundaryConditions();
+        alphaPhis.set(fluids[k], phiSum.set(k, nullptr).ptr());
+    }
+}
+
+
+void Foam::vheMixture::solveGeometric
+(
+    const labelList& active,
+    scalar cAlpha,
+    label nSub
+)
+{
+    transported t;
+    selectTransported(active, t);
+    const label n = t.size();
+    const scalar deltaT = mesh_.time().deltaTValue();
+
+    DynamicList<label> solidList(n), fluidList(n);
+    for (label i = 0; i < n; ++i)
+    {
+        (t.solid[i] ? solidList : fluidList).append(i);
+    }
+
+    // Each solid field geometrically over the whole step (isoAdvector
+    // needs no sub-cycles below a Courant number of 1); the colours a sum
+    // carries on its flux
+    PtrList<surfaceScalarField> alphaPhis(n);
+    surfaceScalarField phiSolid
+    (
+        IOobject
+        (
+            "phiSolid", mesh_.time().timeName(), mesh_,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        mesh_,
+        dimensionedScalar(phi_.dimensions(), Zero)
+    );
+    for (const label i : solidList)
+    {
+        alphaPhis.set(i, solidAdvection::advect(t.fields[i], phi_, U_).ptr());
+    }
+
+    // Bodies of two colours (or materials) carried into one cell can fill
+    // it beyond 1: each solid moves to its own neighbours where the cell
+    // overflows (spreadOverlaps, conservative, on the fluxes too)
+    {
+        UPtrList<volScalarField> fields(solidList.size());
+        UPtrList<surfaceScalarField> fluxes(solidList.size());
+        forAll(solidList, k)
+        {
+            fields.set(k, &t.fields[solidList[k]]);
+            fluxes.set(k, &alphaPhis[solidList[k]]);
+        }
+        spreadOverlaps(fields, fluxes, deltaT);
+    }
+
+    for (const label i : solidList)
+    {
+        phiSolid += alphaPhis[i];
+        if (t.carried[i].empty()) continue;
+        UPtrList<volScalarField> colours(t.carried[i].size());
+        forAll(t.carried[i], c)
+        {
+            colours.set(c, &alphas_[t.carried[i][c]]);
+        }
+        colourShares::transport(colours, alphaPhis[i], deltaT);
+    }
+
+    // What spreadOverlaps could not place (a cell whose neighbours are
+    // full, or across a processor boundary) is scaled out and logged
+    scalarField solidNew(mesh_.nCells(), Zero);
+    for (const label i : active)
+    {
+        if (phases_[i].solid) solidNew += alphas_[i].primitiveField();
+    }
+    scalar overlap = 0;
+    forAll(solidNew, celli)
+    {
+        if (solidNew[celli] <= 1) continue;
+        for (const label i : active)
+        {
+            if (phases_[i].solid)
+            {
+                alphas_[i].primitiveFieldRef()[celli] /= solidNew[celli];
+            }
+        }
+        overlap += (solidNew[celli] - 1)*mesh_.V()[celli];
+        solidNew[celli] = 1;
+    }
+    if (returnReduce(overlap, sumOp<scalar>()) > 0)
+    {
+        for (const label i : active)
+        {
+            if (phases_[i].solid) alphas_[i].correctBoundaryConditions();
+        }
+        Info<< "Solids overlapping: " << returnReduce(overlap, sumOp<scalar>())
+            << " m^3 of solid scaled out" << endl;
+    }
+
+    // The fluids on what the solids leave
+    const surfaceScalarField phiFluid("phiFluid", phi_ - phiSolid);
+    fluidShares
+    (
+        t, fluidList, phiFluid, max(1 - solidNew, scalar(0)), cAlpha, nSub,
+        alphaPhis
+    );
+
+    rhoPhi_ = dimensionedScalar(rhoPhi_.dimensions(), Zero);
+    for (label i = 0; i < n; ++i)
+    {
+        rhoPhi_ += alphaPhis[i]*dimensionedScalar("rho", dimDensity, t.rho[i]);
+        if (t.elastic[i])
+        {
+            *alphaPhiSolid_ += alphaPhis[i];
+        }
+    }
+}
+
+
+// ************************************************************************* //
