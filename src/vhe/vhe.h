@@ -705,6 +705,28 @@ double vhe_height_curvature(const double h[9], double d1, double d2,
 int vhe_anderson_gamma(int m, const double *gram, const double *b,
                        double *gamma);
 
+/* ---- Fractions into bounds (bound.c) -----------------------------------
+ *
+ * vhe_bound_fractions: nS fraction fields a[k] over nCells cells with
+ *   volumes V, carried one by one (so each may leave [0, 1] a little and
+ *   their sum exceed 1), brought into bounds by moving volume over internal
+ *   faces (own/nei; the internal faces of cell c are cellFaces[cellStart[c]
+ *   .. cellStart[c+1]-1]): a fraction below 0 takes what it lacks from the
+ *   neighbours holding that field, in proportion to what they hold; a
+ *   cell whose fields sum above 1 gives the excess to its neighbours with
+ *   room (1 - sum), in proportion to the room, each field's part in
+ *   proportion to its fraction.  Each move dV over face f adds +-dV/dt to
+ *   flux[k][f] (positive from owner to neighbour), so that the fields stay
+ *   the fluxes' update.  Up to nSweeps passes of each kind; s (nCells) is
+ *   work space and ends as the sum.  Volumes are kept to round-off.
+ *   Returns the volume moved.
+ */
+double vhe_bound_fractions(long nCells, const int *own, const int *nei,
+                           const long *cellStart, const int *cellFaces,
+                           const double *V, int nS, double *const *a,
+                           double *const *flux, double dt, double *s,
+                           int nSweeps);
+
 #ifdef __cplusplus
 }
 #endif

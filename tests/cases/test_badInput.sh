@@ -126,6 +126,8 @@ d=$(variant badSecondOrderWalls); sed -i 's/^    pRefValue .*/&\n    secondOrder
 expectFatal badSecondOrderWalls "$d" vheFoam "Expected 'true/false', 'on/off' ... found maybe" fvSolution.PIMPLE.secondOrderWalls
 d=$(variant badCoupling); sed -i 's/^    pRefValue .*/&\n    coupling { tolerance -1; }/' "$d/system/fvSolution"
 expectFatal badCoupling "$d" vheFoam "coupling: tolerance must be > 0" fvSolution.PIMPLE.coupling
+d=$(variant badSolidTransport); sed -i "0,/nAlphaSubCycles/s/nAlphaSubCycles.*/&\n        solidTransport  isoish;/" "$d/system/fvSolution"
+expectFatal badSolidTransport "$d" vheFoam "solidTransport must be geometric or MULES, got 'isoish'" fvSolution.solvers
 d=$(variant unknownBTransport); sed -i 's/^    pRefValue .*/&\n    BTransport upwindish;/' "$d/system/fvSolution"
 expectFatal unknownBTransport "$d" vheFoam "Unknown BTransport 'upwindish'" fvSolution
 d=$(variant unknownPrescribedVelocity); sed -i 's/^    pRefValue .*/&\n    prescribedVelocity { type swirl; }/' "$d/system/fvSolution"

@@ -6,6 +6,7 @@
 #include "isoAdvection.H"
 #include "cyclicFvPatch.H"
 #include "profiling.H"
+#include "vhe.h"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -73,6 +74,10 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     // From the step's start (a PIMPLE outer iteration transports again)
     alpha == alpha.oldTime();
 
+    // isoAdvection's clip is not conservative: bound() does it instead
+    const_cast<dictionary&>(alpha.mesh().solverDict(alpha.name()))
+        .set("clip", false);
+
     const dimensionedScalar one("one", dimDensity, 1.0);
     const dimensionedScalar zero("zero", dimDensity, 0.0);
     tmp<surfaceScalarField> talphaPhi;
@@ -87,6 +92,52 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     talphaPhi.ref().rename("alphaPhi." + alpha.name());
     syncCyclic(alpha, phi, talphaPhi.ref());
     return talphaPhi;
+}
+
+
+Foam::scalar Foam::solidAdvection::bound
+(
+    UPtrList<volScalarField>& fields,
+    UPtrList<surfaceScalarField>& fluxes,
+    const scalar deltaT
+)
+{
+    const label nS = fields.size();
+    if (nS == 0) return 0;
+    const fvMesh& mesh = fields[0].mesh();
+    const label nInt = mesh.nInternalFaces();
+
+    // Each cell's internal faces (compressed rows, C core)
+    const cellList& cells = mesh.cells();
+    List<long> start(mesh.nCells() + 1, long(0));
+    DynamicList<int> faces(2*nInt);
+    forAll(cells, c)
+    {
+        start[c] = faces.size();
+        for (const label f : cells[c])
+        {
+            if (f < nInt) faces.append(f);
+        }
+    }
+    start[mesh.nCells()] = faces.size();
+
+    List<scalar*> a(nS), F(nS);
+    forAll(fields, k)
+    {
+        a[k] = fields[k].primitiveFieldRef().data();
+        F[k] = fluxes[k].primitiveFieldRef().data();
+    }
+    scalarField work(mesh.nCells());
+    const scalar moved = vhe_bound_fractions
+    (
+        mesh.nCells(), mesh.owner().cdata(), mesh.neighbour().cdata(),
+        start.cdata(), faces.cdata(), mesh.V().cdata(), nS, a.data(),
+        F.data(), deltaT, work.data(), 10
+    );
+
+    // every rank (a processor patch's exchange)
+    for (volScalarField& f : fields) f.correctBoundaryConditions();
+    return returnReduce(moved, sumOp<scalar>());
 }
 
 

@@ -14,79 +14,6 @@
 
 // * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
 
-void Foam::vheMixture::spreadOverlaps
-(
-    UPtrList<volScalarField>& fields,
-    UPtrList<surfaceScalarField>& fluxes,
-    const scalar deltaT
-) const
-{
-    // Each solid is carried by isoAdvector alone, as if the rest of every
-    // cell were fluid: where two bodies converge (the liquid between them
-    // squeezed out) their fractions can sum above 1.  The excess of such a
-    // cell goes to its face neighbours that have room (liquid), each
-    // solid's part in proportion to its fraction, as a flux over the shared
-    // face: volumes are kept to round-off and the fluxes (B*, rhoPhi, the
-    // fluids' rest) see the move.  Internal faces only; up to ten sweeps
-    const label nS = fields.size();
-    if (nS < 2) return;
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const scalarField& V = mesh_.V();
-    const cellList& cells = mesh_.cells();
-    const label nInt = mesh_.nInternalFaces();
-
-    scalarField s(mesh_.nCells(), Zero);
-    for (const volScalarField& a : fields) s += a.primitiveField();
-
-    bool moved = false;
-    for (label sweep = 0; sweep < 10; ++sweep)
-    {
-        label nOver = 0;
-        forAll(s, c)
-        {
-            if (s[c] <= 1 + 1e-14) continue;
-            ++nOver;
-            scalar room = 0;
-            for (const label f : cells[c])
-            {
-                if (f >= nInt) continue;
-                const label n = own[f] == c ? nei[f] : own[f];
-                room += max(1 - s[n], scalar(0))*V[n];
-            }
-            if (room <= 0) continue;
-            const scalar excess = (s[c] - 1)*V[c];
-            const scalar move = min(excess, room);
-            scalarList w(nS);
-            for (label k = 0; k < nS; ++k) w[k] = fields[k][c]/s[c];
-            for (const label f : cells[c])
-            {
-                if (f >= nInt) continue;
-                const label n = own[f] == c ? nei[f] : own[f];
-                const scalar dV = move*max(1 - s[n], scalar(0))*V[n]/room;
-                if (dV <= 0) continue;
-                const scalar sign = own[f] == c ? 1 : -1;
-                for (label k = 0; k < nS; ++k)
-                {
-                    const scalar dVk = dV*w[k];
-                    fields[k].primitiveFieldRef()[c] -= dVk/V[c];
-                    fields[k].primitiveFieldRef()[n] += dVk/V[n];
-                    fluxes[k].primitiveFieldRef()[f] += sign*dVk/deltaT;
-                }
-                s[n] += dV/V[n];
-            }
-            s[c] -= move/V[c];
-            moved = true;
-        }
-        if (nOver == 0) break;
-    }
-    if (returnReduce(moved, orOp<bool>()))
-    {
-        for (volScalarField& a : fields) a.correctBoundaryConditions();
-    }
-}
-
-
 void Foam::vheMixture::fluidShares
 (
     transported& t,
@@ -327,9 +254,10 @@ void Foam::vheMixture::solveGeometric
         alphaPhis.set(i, solidAdvection::advect(t.fields[i], phi_, U_).ptr());
     }
 
-    // Bodies of two colours (or materials) carried into one cell can fill
-    // it beyond 1: each solid moves to its own neighbours where the cell
-    // overflows (spreadOverlaps, conservative, on the fluxes too)
+    // isoAdvector's bounding leaves fractions a little outside [0, 1], and
+    // bodies of two colours carried into one cell can fill it beyond 1:
+    // what is out of bounds moves to the face neighbours (conservative, on
+    // the fluxes too)
     {
         UPtrList<volScalarField> fields(solidList.size());
         UPtrList<surfaceScalarField> fluxes(solidList.size());
@@ -338,7 +266,7 @@ void Foam::vheMixture::solveGeometric
             fields.set(k, &t.fields[solidList[k]]);
             fluxes.set(k, &alphaPhis[solidList[k]]);
         }
-        spreadOverlaps(fields, fluxes, deltaT);
+        solidAdvection::bound(fields, fluxes, deltaT);
     }
 
     for (const label i : solidList)
@@ -353,14 +281,24 @@ void Foam::vheMixture::solveGeometric
         colourShares::transport(colours, alphaPhis[i], deltaT);
     }
 
-    // What spreadOverlaps could not place (a cell whose neighbours are
-    // full, or across a processor boundary) is scaled out and logged
+    // What bound could not place (a cell whose neighbours are full, or
+    // across a processor boundary) is scaled out and logged
     scalarField solidNew(mesh_.nCells(), Zero);
+    scalar outside = 0;
     for (const label i : active)
     {
-        if (phases_[i].solid) solidNew += alphas_[i].primitiveField();
+        if (!phases_[i].solid) continue;
+        scalarField& a = alphas_[i].primitiveFieldRef();
+        forAll(a, celli)
+        {
+            if (a[celli] < 0)
+            {
+                outside -= a[celli]*mesh_.V()[celli];
+                a[celli] = 0;
+            }
+        }
+        solidNew += a;
     }
-    scalar overlap = 0;
     forAll(solidNew, celli)
     {
         if (solidNew[celli] <= 1) continue;
@@ -371,16 +309,16 @@ void Foam::vheMixture::solveGeometric
                 alphas_[i].primitiveFieldRef()[celli] /= solidNew[celli];
             }
         }
-        overlap += (solidNew[celli] - 1)*mesh_.V()[celli];
+        outside += (solidNew[celli] - 1)*mesh_.V()[celli];
         solidNew[celli] = 1;
     }
-    if (returnReduce(overlap, sumOp<scalar>()) > 0)
+    if (returnReduce(outside, sumOp<scalar>()) > 0)
     {
         for (const label i : active)
         {
             if (phases_[i].solid) alphas_[i].correctBoundaryConditions();
         }
-        Info<< "Solids overlapping: " << returnReduce(overlap, sumOp<scalar>())
+        Info<< "Solids out of bounds: " << returnReduce(outside, sumOp<scalar>())
             << " m^3 of solid scaled out" << endl;
     }
 

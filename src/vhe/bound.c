@@ -1,0 +1,93 @@
+/*
+ * vheFoam C core: fractions brought into bounds conservatively (the
+ * solids carried one by one by isoAdvector, solidAdvection::bound).
+ */
+#include "vhe.h"
+
+/* Move dV of field k from cell c to cell n over internal face f */
+static void bound_move(int k, int c, int n, int f, double dV, const int *own,
+                       const double *V, double dt, double *const *a,
+                       double *const *flux, double *moved)
+{
+    a[k][c] -= dV / V[c];
+    a[k][n] += dV / V[n];
+    flux[k][f] += (own[f] == c ? 1.0 : -1.0) * dV / dt;
+    *moved += dV;
+}
+
+double vhe_bound_fractions(long nCells, const int *own, const int *nei,
+                           const long *cellStart, const int *cellFaces,
+                           const double *V, int nS, double *const *a,
+                           double *const *flux, double dt, double *s,
+                           int nSweeps)
+{
+    const double tol = 1e-15;
+    double moved = 0.0;
+
+    /* Below 0: what a cell lacks, from the neighbours that hold the field */
+    for (int k = 0; k < nS; ++k) {
+        for (int sweep = 0; sweep < nSweeps; ++sweep) {
+            long nUnder = 0;
+            for (long c = 0; c < nCells; ++c) {
+                if (a[k][c] >= -tol) continue;
+                ++nUnder;
+                double held = 0.0;
+                for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
+                    const int f = cellFaces[j];
+                    const int n = own[f] == c ? nei[f] : own[f];
+                    if (a[k][n] > 0) held += a[k][n] * V[n];
+                }
+                if (held <= 0) continue;
+                const double need = -a[k][c] * V[c];
+                const double take = need < held ? need : held;
+                for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
+                    const int f = cellFaces[j];
+                    const int n = own[f] == c ? nei[f] : own[f];
+                    if (a[k][n] <= 0) continue;
+                    bound_move(k, n, (int)c, f, take * a[k][n] * V[n] / held,
+                               own, V, dt, a, flux, &moved);
+                }
+            }
+            if (nUnder == 0) break;
+        }
+    }
+
+    /* Sum above 1: the excess to the neighbours with room, each field's
+     * part in proportion to its fraction */
+    for (long c = 0; c < nCells; ++c) {
+        s[c] = 0.0;
+        for (int k = 0; k < nS; ++k) s[c] += a[k][c];
+    }
+    for (int sweep = 0; sweep < nSweeps; ++sweep) {
+        long nOver = 0;
+        for (long c = 0; c < nCells; ++c) {
+            if (s[c] <= 1.0 + tol) continue;
+            ++nOver;
+            double room = 0.0;
+            for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
+                const int f = cellFaces[j];
+                const int n = own[f] == c ? nei[f] : own[f];
+                if (s[n] < 1.0) room += (1.0 - s[n]) * V[n];
+            }
+            if (room <= 0) continue;
+            const double excess = (s[c] - 1.0) * V[c];
+            const double give = excess < room ? excess : room;
+            for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
+                const int f = cellFaces[j];
+                const int n = own[f] == c ? nei[f] : own[f];
+                if (s[n] >= 1.0) continue;
+                const double dV = give * (1.0 - s[n]) * V[n] / room;
+                for (int k = 0; k < nS; ++k) {
+                    /* in proportion: a[k][c]/s[c] stays as it was */
+                    if (a[k][c] > 0)
+                        bound_move(k, (int)c, n, f, dV * a[k][c] / s[c], own,
+                                   V, dt, a, flux, &moved);
+                }
+                s[n] += dV / V[n];
+                s[c] -= dV / V[c];
+            }
+        }
+        if (nOver == 0) break;
+    }
+    return moved;
+}

@@ -1,0 +1,83 @@
+/* Check tests of bound.c */
+#include <check.h>
+#include <math.h>
+
+#include "vhe.h"
+
+/* A row of 6 cells (internal faces f between cells f and f+1, volumes 1
+   and 2 alternating), two fields: cell 1 of field 0 at -1e-3 (what
+   isoAdvector's bounding leaves), cells 3 and 4 filled beyond 1 by both.
+   After bounding: every fraction >= 0, every sum <= 1, each field's volume
+   kept to 1e-15, and each field equal to its start minus dt div(flux) of
+   the fluxes added (to 1e-15) */
+START_TEST(test_row)
+{
+    enum { N = 6, F = N - 1, S = 2 };
+    int own[F], nei[F], cellFaces[2 * F];
+    long cellStart[N + 1];
+    double V[N], a0[S][N] = {{0.5, -1e-3, 0.3, 0.7, 0.9, 0.0},
+                             {0.0, 0.2, 0.0, 0.5, 0.3, 0.1}};
+    double a[S][N], flux[S][F] = {{0}}, s[N];
+    double *ap[S] = {a[0], a[1]}, *fp[S] = {flux[0], flux[1]};
+    const double dt = 0.1;
+    int c, f, k, j = 0;
+    for (f = 0; f < F; ++f) { own[f] = f; nei[f] = f + 1; }
+    for (c = 0; c < N; ++c) {
+        V[c] = c % 2 ? 2.0 : 1.0;
+        cellStart[c] = j;
+        if (c > 0) cellFaces[j++] = c - 1;
+        if (c < N - 1) cellFaces[j++] = c;
+    }
+    cellStart[N] = j;
+    for (k = 0; k < S; ++k)
+        for (c = 0; c < N; ++c) a[k][c] = a0[k][c];
+    const double moved = vhe_bound_fractions(N, own, nei, cellStart,
+                                             cellFaces, V, S, ap, fp, dt, s,
+                                             10);
+    ck_assert(moved > 0);
+    for (k = 0; k < S; ++k) {
+        double v0 = 0, v1 = 0;
+        for (c = 0; c < N; ++c) {
+            double div = 0;
+            ck_assert(a[k][c] >= -1e-15);
+            v0 += a0[k][c] * V[c];
+            v1 += a[k][c] * V[c];
+            if (c > 0) div -= flux[k][c - 1];
+            if (c < N - 1) div += flux[k][c];
+            ck_assert_double_eq_tol(a[k][c], a0[k][c] - dt * div / V[c],
+                                    1e-15);
+        }
+        ck_assert_double_eq_tol(v1, v0, 1e-15);
+    }
+    for (c = 0; c < N; ++c) {
+        ck_assert(a[0][c] + a[1][c] <= 1 + 1e-15);
+        ck_assert_double_eq_tol(s[c], a[0][c] + a[1][c], 1e-15);
+    }
+    /* the overfull cells gave in proportion: field 0's share of cell 3
+       (7/12) is kept */
+    ck_assert_double_eq_tol(a[0][3] / (a[0][3] + a[1][3]), 0.7 / 1.2, 1e-14);
+}
+END_TEST
+
+/* Bounded fields are left alone */
+START_TEST(test_bounded)
+{
+    int own[1] = {0}, nei[1] = {1}, cellFaces[2] = {0, 0};
+    long cellStart[3] = {0, 1, 2};
+    double V[2] = {1, 1}, a[2] = {0.0, 1.0}, flux[1] = {0}, s[2];
+    double *ap[1] = {a}, *fp[1] = {flux};
+    ck_assert(vhe_bound_fractions(2, own, nei, cellStart, cellFaces, V, 1, ap,
+                                  fp, 1.0, s, 10) == 0.0);
+    ck_assert(a[0] == 0.0 && a[1] == 1.0 && flux[0] == 0.0);
+}
+END_TEST
+
+Suite *bound_suite(void)
+{
+    Suite *s = suite_create("bound");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, test_row);
+    tcase_add_test(tc, test_bounded);
+    suite_add_tcase(s, tc);
+    return s;
+}
