@@ -7,7 +7,8 @@
 #    corner down), released at half its draft.  Its mean draft over
 #    2 <= t <= 3 must be the Archimedes one, (rho_s - rho_air)/(rho_water -
 #    rho_air) x height = 0.04995 m, within 0.5 % of its height (KNOWN:
-#    measured 0.04785, 2.1 % of the height; below).
+#    measured 0.04892, 1.0 % of the height; 2.1 % when the solids were
+#    carried by MULES; below).
 #  - a box of rho_s = 2000 sinks: its lowest point falls from 0.3 m to
 #    within 0.075 m of the floor by t = 2 (measured 0.044: the last film of
 #    water drains slowly, as it should), never moving up.
@@ -39,7 +40,7 @@ figure() { python3 "$TESTS_DIR/floating.py" "$@"; }
 exact=$(python3 -c "print((500 - 1)/(1000 - 1)*0.1)")
 draft=$(figure draft "$WORK/archimedes" 0.1 2)
 # A stiff elastic box floats high, the more so the stiffer it is (G/rho_s
-# 10: 2.1 % of its height, 0.08 cell; 100: 3.3 %): the projection's
+# 10: 1.0 % of its height, 0.04 cell; 2.1 % with MULES's diffuse edge): the projection's
 # splitting strains it each step, and a strain of 1e-3 at its edge, where
 # air, water and body meet, is a stress of G/1000, a tenth of the
 # buoyancy's at G/rho_s = 100.  A rigid box floats at the Archimedes
