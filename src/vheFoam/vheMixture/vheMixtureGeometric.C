@@ -164,29 +164,57 @@ void Foam::vheMixture::fluidShares
             addUpwind(0);
             cPhis[1] = phiFluid - cPhis[0];
         }
+        const scalarField& fOld = f.oldTime().primitiveField();
+        const scalarField& fNew = f.primitiveField();
+        // The shares' update from the fluxes (a cell the step empties of
+        // fluid keeps its shares)
+        PtrList<scalarField> cNew(nF);
+        const auto update = [&]()
+        {
+            scalar lo = GREAT;
+            forAll(c, k)
+            {
+                const scalarField& c0 = c[k].oldTime().primitiveField();
+                const scalarField fc
+                (
+                    fOld*c0
+                  - deltaT*fvc::surfaceIntegrate(cPhis[k])().primitiveField()
+                );
+                cNew.set(k, new scalarField(c0));
+                scalarField& ck = cNew[k];
+                forAll(ck, celli)
+                {
+                    if (fNew[celli] > delta) ck[celli] = fc[celli]/fNew[celli];
+                }
+                lo = min(lo, min(ck));
+            }
+            return returnReduce(lo, minOp<scalar>());
+        };
+        if (nF == 2)
+        {
+            // interFoam's two phases: the second takes the rest
+            limitCorrection(0);
+            addUpwind(0);
+            cPhis[1] = phiFluid - cPhis[0];
+            update();
+        }
         else
         {
+            // limitSum can take a share out of bounds where three meet: as
+            // without solids, such a step is limited again (nLimitSumIter)
             forAll(c, k) limitCorrection(k);
             MULES::limitSum(cPhis);
             forAll(c, k) addUpwind(k);
+            for (label iter = 0; update() < -1e-9 && iter < 2; ++iter)
+            {
+                forAll(c, k) limitCorrection(k);
+                MULES::limitSum(cPhis);
+                forAll(c, k) addUpwind(k);
+            }
         }
-        const scalarField& fOld = f.oldTime().primitiveField();
-        const scalarField& fNew = f.primitiveField();
         forAll(c, k)
         {
-            const scalarField& c0 = c[k].oldTime().primitiveField();
-            const scalarField fc
-            (
-                fOld*c0
-              - deltaT*fvc::surfaceIntegrate(cPhis[k])().primitiveField()
-            );
-            scalarField& ck = c[k].primitiveFieldRef();
-            forAll(ck, celli)
-            {
-                // a cell the step empties of fluid keeps its shares
-                ck[celli] =
-                    fNew[celli] > delta ? fc[celli]/fNew[celli] : c0[celli];
-            }
+            c[k].primitiveFieldRef() = cNew[k];
             c[k].correctBoundaryConditions();
             phiSum[k] += cPhis[k]/scalar(nSub);
         }
