@@ -157,13 +157,6 @@ void Foam::vheMixture::fluidShares
         {
             cPhis[k] += upwind<scalar>(mesh_, phiFluid).flux(c[k]);
         };
-        if (nF == 2)
-        {
-            // interFoam's two phases: the second takes the rest
-            limitCorrection(0);
-            addUpwind(0);
-            cPhis[1] = phiFluid - cPhis[0];
-        }
         const scalarField& fOld = f.oldTime().primitiveField();
         const scalarField& fNew = f.primitiveField();
         // The shares' update from the fluxes (a cell the step empties of
