@@ -447,6 +447,7 @@ Foam::vheMixture::vheMixture
     if (alphas_.size() > 1)
     {
         checkSchemes();
+        geometricSolids();
     }
 
     if (nSolids_)

@@ -32,6 +32,26 @@ void Foam::vheMixture::checkSchemes() const
 }
 
 
+bool Foam::vheMixture::geometricSolids() const
+{
+    // Solids are carried geometrically (isoAdvector); MULES with
+    // interface compression, as the fluids, is kept as the reference of
+    // benchmarks/transport (solidTransport MULES)
+    const dictionary& alphaControls = mesh_.solverDict("alpha");
+    const word solidTransport
+    (
+        alphaControls.getOrDefault<word>("solidTransport", "geometric")
+    );
+    if (solidTransport != "geometric" && solidTransport != "MULES")
+    {
+        FatalIOErrorInFunction(alphaControls)
+            << "solidTransport must be geometric or MULES, got '"
+            << solidTransport << "'" << exit(FatalIOError);
+    }
+    return solidTransport == "geometric";
+}
+
+
 void Foam::vheMixture::alphaFluxes
 (
     const transported& t,
@@ -315,26 +335,13 @@ void Foam::vheMixture::solve()
         *alphaPhiSolid_ = dimensionedScalar(dimVolume/dimTime, Zero);
     }
 
-    // Solids are carried geometrically (isoAdvector); MULES with
-    // interface compression, as the fluids, is kept as the reference of
-    // benchmarks/transport (solidTransport MULES)
-    const word solidTransport
-    (
-        alphaControls.getOrDefault<word>("solidTransport", "geometric")
-    );
-    if (solidTransport != "geometric" && solidTransport != "MULES")
-    {
-        FatalIOErrorInFunction(alphaControls)
-            << "solidTransport must be geometric or MULES, got '"
-            << solidTransport << "'" << exit(FatalIOError);
-    }
     bool solids = false;
     for (const label i : active)
     {
         solids = solids || phases_[i].solid;
     }
 
-    if (solids && solidTransport == "geometric")
+    if (solids && geometricSolids())
     {
         // Bodies' outlines are geometry: isoAdvector for the solids
         solveGeometric(active, cAlpha, nSub);
