@@ -8,8 +8,7 @@
 #include "solidAdvection.H"
 #include "colourShares.H"
 #include "fvc.H"
-#include "MULES.H"
-#include "upwind.H"
+#include "limitSum.H"
 #include "profiling.H"
 
 // * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
@@ -21,6 +20,7 @@ void Foam::vheMixture::fluidShares
     const surfaceScalarField& phiFluid,
     const scalarField& fluidNew,
     scalar cAlpha,
+    label nLimitSumIter,
     label nSub,
     PtrList<surfaceScalarField>& alphaPhis
 )
@@ -144,19 +144,6 @@ void Foam::vheMixture::fluidShares
 
         PtrList<surfaceScalarField> cPhis;
         alphaFluxes(ts, phiFluid, cAlpha, cPhis);
-        // MULES's limited correction of share k's flux, then its full flux
-        const auto limitCorrection = [&](const label k)
-        {
-            MULES::limit
-            (
-                1.0/deltaT, f, c[k], phiFluid, cPhis[k],
-                zeroField(), zeroField(), oneField(), zeroField(), true
-            );
-        };
-        const auto addUpwind = [&](const label k)
-        {
-            cPhis[k] += upwind<scalar>(mesh_, phiFluid).flux(c[k]);
-        };
         const scalarField& fOld = f.oldTime().primitiveField();
         const scalarField& fNew = f.primitiveField();
         // The shares' update from the fluxes (a cell the step empties of
@@ -185,25 +172,23 @@ void Foam::vheMixture::fluidShares
         };
         if (nF == 2)
         {
-            // interFoam's two phases: the second takes the rest
-            limitCorrection(0);
-            addUpwind(0);
+            // interFoam's two phases: the first share limited, the second
+            // takes the rest
+            MULES::limit
+            (
+                1.0/deltaT, f, c[0], phiFluid, cPhis[0],
+                zeroField(), zeroField(), oneField(), zeroField(), true
+            );
+            cPhis[0] += upwind<scalar>(mesh_, phiFluid).flux(c[0]);
             cPhis[1] = phiFluid - cPhis[0];
             update();
         }
         else
         {
-            // limitSum can take a share out of bounds where three meet: as
-            // without solids, such a step is limited again (nLimitSumIter)
-            forAll(c, k) limitCorrection(k);
-            MULES::limitSum(cPhis);
-            forAll(c, k) addUpwind(k);
-            for (label iter = 0; update() < -1e-9 && iter < 2; ++iter)
-            {
-                forAll(c, k) limitCorrection(k);
-                MULES::limitSum(cPhis);
-                forAll(c, k) addUpwind(k);
-            }
+            vheMULES::limitSum
+            (
+                ts.fields, f, phiFluid, deltaT, nLimitSumIter, cPhis, update
+            );
         }
         forAll(c, k)
         {
@@ -242,6 +227,7 @@ void Foam::vheMixture::solveGeometric
 (
     const labelList& active,
     scalar cAlpha,
+    label nLimitSumIter,
     label nSub
 )
 {
@@ -347,7 +333,8 @@ void Foam::vheMixture::solveGeometric
     const surfaceScalarField phiFluid("phiFluid", phi_ - phiSolid);
     fluidShares
     (
-        t, fluidList, phiFluid, max(1 - solidNew, scalar(0)), cAlpha, nSub,
+        t, fluidList, phiFluid, max(1 - solidNew, scalar(0)), cAlpha,
+        nLimitSumIter, nSub,
         alphaPhis
     );
 

@@ -8,8 +8,7 @@
 #include "vheMixture.H"
 #include "colourShares.H"
 #include "fvc.H"
-#include "MULES.H"
-#include "upwind.H"
+#include "limitSum.H"
 #include "profiling.H"
 #include "vheFlat.H"
 #include "vhe.h"
@@ -129,98 +128,34 @@ void Foam::vheMixture::limitFluxes
     PtrList<scalarField>& alphaNew
 ) const
 {
+    // The explicit update from the sub-step's old value
+    // (MULES::explicitSolve with unit density, written out so that
+    // sub-steps are exact)
     const label n = t.size();
-
-    // MULES: field i's full flux in, its limited correction to the upwind
-    // flux out (returnCorr), bounds [0, 1]
-    const auto limitCorrection = [&](const label i)
-    {
-        addProfiling(limit, "vheMixture::MULES::limit");
-        MULES::limit
-        (
-            1.0/deltaT,
-            geometricOneField(),
-            t.fields[i],
-            phi_,
-            alphaPhis[i],
-            zeroField(),
-            zeroField(),
-            oneField(),
-            zeroField(),
-            true
-        );
-    };
-    for (label i = 0; i < n; ++i)
-    {
-        limitCorrection(i);
-    }
-
-    MULES::limitSum(alphaPhis);
-
-    // Full fluxes: the bounded low-order (upwind) part plus the limited
-    // correction; the upwind parts are kept only for re-limiting
-    PtrList<surfaceScalarField> alphaPhiUDs(nLimitSumIter > 0 ? n : 0);
-    for (label i = 0; i < n; ++i)
-    {
-        tmp<surfaceScalarField> tUD
-        (
-            upwind<scalar>(mesh_, phi_).flux(t.fields[i])
-        );
-        alphaPhis[i] += tUD();
-        if (nLimitSumIter > 0)
-        {
-            alphaPhiUDs.set(i, tUD.ptr());
-        }
-    }
-
-    // Explicit update from the sub-step's old value (MULES::explicitSolve
-    // with unit density, written out so that sub-steps are exact)
-    const auto update = [&](const label i)
-    {
-        return tmp<scalarField>
-        (
-            t.fields[i].oldTime().primitiveField()
-          - deltaT*fvc::surfaceIntegrate(alphaPhis[i])().primitiveField()
-        );
-    };
-
-    // limitSum scales some fields' corrections down to make them sum to
-    // zero; where three or more fields meet, that can take one out of its
-    // bounds (multiphaseMixture's alphas leave [0, 1] by ~1e-5).  So the
-    // update is checked first, and a step where a field would fall below 0
-    // by more than 1e-9 is limited again and re-summed, up to nLimitSumIter
-    // times: the cost is paid only where it is needed (one step in ten in
-    // the floatingBlock tutorial).  Overshoots above 1 need no pass: the
-    // sum correction below takes them out once all are >= 0.  The last
-    // check's update is the step's (without re-limiting, the update is
-    // not checked).
     alphaNew.setSize(n);
-    for (label iter = 0; ; ++iter)
+    const auto update = [&]()
     {
         scalar lo = GREAT;
         for (label i = 0; i < n; ++i)
         {
-            alphaNew.set(i, update(i).ptr());
+            alphaNew.set
+            (
+                i,
+                new scalarField
+                (
+                    t.fields[i].oldTime().primitiveField()
+                  - deltaT*fvc::surfaceIntegrate(alphaPhis[i])().primitiveField()
+                )
+            );
             lo = min(lo, min(alphaNew[i]));
         }
-        if
-        (
-            iter == nLimitSumIter
-         || returnReduce(lo, minOp<scalar>()) >= -1e-9
-        )
-        {
-            break;
-        }
-        for (label i = 0; i < n; ++i)
-        {
-            limitCorrection(i);
-        }
-        MULES::limitSum(alphaPhis);
-        for (label i = 0; i < n; ++i)
-        {
-            alphaPhis[i] += alphaPhiUDs[i];
-        }
-    }
+        return returnReduce(lo, minOp<scalar>());
+    };
+    vheMULES::limitSum
+    (
+        t.fields, geometricOneField(), phi_, deltaT, nLimitSumIter,
+        alphaPhis, update
+    );
 }
 
 
@@ -344,7 +279,7 @@ void Foam::vheMixture::solve()
     if (solids && geometricSolids())
     {
         // Bodies' outlines are geometry: isoAdvector for the solids
-        solveGeometric(active, cAlpha, nSub);
+        solveGeometric(active, cAlpha, nLimitSumIter, nSub);
     }
     else if (nSub == 1)
     {
