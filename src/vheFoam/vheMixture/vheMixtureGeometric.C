@@ -75,6 +75,17 @@ void Foam::vheMixture::fluidShares
     );
     f.oldTime();
 
+    // ... and on the patches
+    PtrList<scalarField> fb(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        fb.set(patchi, new scalarField(mesh_.boundary()[patchi].size(), delta));
+        for (const label i : fluids)
+        {
+            fb[patchi] += t.fields[i].oldTime().boundaryField()[patchi];
+        }
+    }
+
     PtrList<volScalarField> c(nF);
     PtrList<surfaceScalarField> phiSum(nF);
     forAll(fluids, k)
@@ -108,13 +119,8 @@ void Foam::vheMixture::fluidShares
         forAll(mesh_.boundary(), patchi)
         {
             if (a.boundaryField()[patchi].coupled()) continue;
-            scalarField fb(a.boundaryField()[patchi].size(), delta);
-            for (const label i : fluids)
-            {
-                fb += t.fields[i].oldTime().boundaryField()[patchi];
-            }
             c[k].boundaryFieldRef()[patchi] ==
-                (a.oldTime().boundaryField()[patchi] + delta/nF)/fb;
+                (a.oldTime().boundaryField()[patchi] + delta/nF)/fb[patchi];
         }
         c[k].correctBoundaryConditions();
         c[k].oldTime();
