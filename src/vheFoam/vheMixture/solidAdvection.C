@@ -141,4 +141,70 @@ Foam::scalar Foam::solidAdvection::bound
 }
 
 
+Foam::scalar Foam::solidAdvection::settle
+(
+    UPtrList<volScalarField>& fields,
+    scalarField& solidSum
+)
+{
+    const label nS = fields.size();
+    solidSum = 0;
+    if (nS == 0) return 0;
+    const scalarField& V = fields[0].mesh().V();
+
+    // Into [0, 1], each field's volume change noted
+    List<scalar> change(nS, Zero);
+    forAll(fields, k)
+    {
+        scalarField& a = fields[k].primitiveFieldRef();
+        forAll(a, celli)
+        {
+            if (a[celli] < 0)
+            {
+                change[k] -= a[celli]*V[celli];
+                a[celli] = 0;
+            }
+        }
+        solidSum += a;
+    }
+    forAll(solidSum, celli)
+    {
+        if (solidSum[celli] <= 1) continue;
+        forAll(fields, k)
+        {
+            scalar& a = fields[k].primitiveFieldRef()[celli];
+            change[k] -= a*(1 - 1/solidSum[celli])*V[celli];
+            a /= solidSum[celli];
+        }
+        solidSum[celli] = 1;
+    }
+
+    // Each field's change undone on its partly filled cells
+    scalar unplaced = 0;
+    bool moved = false;
+    forAll(fields, k)
+    {
+        const scalar dV = returnReduce(change[k], sumOp<scalar>());
+        if (dV == 0) continue;
+        moved = true;
+        scalarField& a = fields[k].primitiveFieldRef();
+        const scalarField w(a*(1 - a)*max(1 - solidSum, scalar(0))*V);
+        const scalar sumW = gSum(w);
+        if (sumW <= mag(dV))
+        {
+            unplaced += mag(dV);
+            continue;
+        }
+        const scalarField da(-dV*w/sumW/V);
+        a += da;
+        solidSum += da;
+    }
+    if (moved)
+    {
+        for (volScalarField& f : fields) f.correctBoundaryConditions();
+    }
+    return unplaced;
+}
+
+
 // ************************************************************************* //

@@ -294,45 +294,24 @@ void Foam::vheMixture::solveGeometric
         colourShares::transport(colours, alphaPhis[i], deltaT);
     }
 
-    // What bound could not place (a cell whose neighbours are full, or
-    // across a processor boundary) is scaled out and logged
+    // What bound could not place (a body's interior, whose neighbours are
+    // full) settles on each field's own surface; what finds no room is
+    // scaled out and logged
     scalarField solidNew(mesh_.nCells(), Zero);
-    scalar outside = 0;
-    for (const label i : active)
     {
-        if (!phases_[i].solid) continue;
-        scalarField& a = alphas_[i].primitiveFieldRef();
-        forAll(a, celli)
-        {
-            if (a[celli] < 0)
-            {
-                outside -= a[celli]*mesh_.V()[celli];
-                a[celli] = 0;
-            }
-        }
-        solidNew += a;
-    }
-    forAll(solidNew, celli)
-    {
-        if (solidNew[celli] <= 1) continue;
+        UPtrList<volScalarField> solids(active.size());
+        label nS = 0;
         for (const label i : active)
         {
-            if (phases_[i].solid)
-            {
-                alphas_[i].primitiveFieldRef()[celli] /= solidNew[celli];
-            }
+            if (phases_[i].solid) solids.set(nS++, &alphas_[i]);
         }
-        outside += (solidNew[celli] - 1)*mesh_.V()[celli];
-        solidNew[celli] = 1;
-    }
-    if (returnReduce(outside, sumOp<scalar>()) > 0)
-    {
-        for (const label i : active)
+        solids.resize(nS);
+        const scalar outside = solidAdvection::settle(solids, solidNew);
+        if (outside > 0)
         {
-            if (phases_[i].solid) alphas_[i].correctBoundaryConditions();
+            Info<< "Solids out of bounds: " << outside
+                << " m^3 of solid scaled out" << endl;
         }
-        Info<< "Solids out of bounds: " << returnReduce(outside, sumOp<scalar>())
-            << " m^3 of solid scaled out" << endl;
     }
 
     // The fluids on what the solids leave
