@@ -22,7 +22,9 @@ import re
 import sys
 
 ALPHA_TOL = 1e-6      # every alpha in [-tol, 1 + tol]
-VOLUME_TOL = 1e-6     # relative drift of every phase volume
+VOLUME_TOL = 1e-6     # relative drift of every fluid's volume
+SOLID_VOLUME_TOL = 1e-12  # and of every solid material's (issue 25): bodies
+                      # are carried geometrically and settled conservatively
 EIG_TOL = -1e-9       # B* positive semi-definite
 DET_TOL = 1e-8        # |det B - 1| in solid cells (phi_s > 0.5): log B is
                       # carried, det B = 1 up to round-off
@@ -53,8 +55,13 @@ def evaluate(case):
             alphaWorst = max(alphaWorst, -float(lo), float(hi) - 1)
         for material, v in sums.items():
             volumes.setdefault(material, []).append(v)
-    drift = max((max(abs(x / vs[0] - 1) for x in vs)
-                 for vs in volumes.values() if vs[0] > 0), default=0.0)
+    def drifts(names):
+        return max((max(abs(x / volumes[m][0] - 1) for x in volumes[m])
+                    for m in names if volumes[m][0] > 0), default=0.0)
+    solids = set(re.findall(r"(\S+) \(solid,", log)) if "Phases:" in log else set()
+    solids = {re.sub(r"\.\d+$", "", m) for m in solids}
+    drift = drifts(volumes)
+    solidDrift = drifts([m for m in volumes if m in solids])
     minEig, detDrift, devB = math.inf, 0.0, 0.0
     total, balance, scale = [], [], 0.0
     diag = os.path.join(case, "postProcessing", "solidDiagnostics", "0",
@@ -85,6 +92,8 @@ def evaluate(case):
         failed.append(f"alpha out of [0, 1] by {alphaWorst:.2e}")
     if drift > VOLUME_TOL:
         failed.append(f"volume drift {drift:.2e}")
+    if solidDrift > SOLID_VOLUME_TOL:
+        failed.append(f"solid volume drift {solidDrift:.2e}")
     if minEig < EIG_TOL:
         failed.append(f"B* eigenvalue {minEig:.2e}")
     if detDrift > DET_TOL:
@@ -117,7 +126,8 @@ def main(cases, out):
     for r in rows:
         print("  ".join(str(r[h]).ljust(n) for h, n in zip(head, widths)))
     print(f"(criteria: ends without NaN; alpha in [0, 1] within {ALPHA_TOL:g}; "
-          f"phase volumes within {VOLUME_TOL:g}; min eig B* >= {EIG_TOL:g}; "
+          f"fluid volumes within {VOLUME_TOL:g}, solid volumes within "
+          f"{SOLID_VOLUME_TOL:g}; min eig B* >= {EIG_TOL:g}; "
           f"|det B - 1| < {DET_TOL:g}; in closed undriven boxes total energy "
           f"never growing by more than {ENERGY_TOL:g} of the largest kinetic "
           f"+ elastic energy)")
