@@ -223,7 +223,42 @@ void Foam::vheMixture::fluidShares
               ? fluidNew[celli]*ck[celli]/sumC[celli]
               : fluidNew[celli]/nF;
         }
-        alpha.correctBoundaryConditions();
+    }
+
+    // Two fluids: the clipping of the shares (and a cell the step empties
+    // of fluid) must not move volume from one fluid to the other.  The
+    // first fluid's volume is set to its old one less what its flux took
+    // through the boundary, by moving the difference between the two in
+    // the cells that hold both (in the splashing dam break 3e-8 of the
+    // liquid's volume had turned into gas by t = 2)
+    if (nF == 2)
+    {
+        const scalarField& V = mesh_.V();
+        scalarField& a0 = t.fields[fluids[0]].primitiveFieldRef();
+        scalarField& a1 = t.fields[fluids[1]].primitiveFieldRef();
+        scalar outflow = 0;
+        forAll(mesh_.boundary(), patchi)
+        {
+            if (mesh_.boundary()[patchi].coupled()) continue;
+            outflow += sum(phiSum[0].boundaryField()[patchi]);
+        }
+        const scalar target =
+            gSum(t.fields[fluids[0]].oldTime().primitiveField()*V)
+          - mesh_.time().deltaTValue()*returnReduce(outflow, sumOp<scalar>());
+        const scalar dV = target - gSum(a0*V);
+        const scalarField w(a0*a1*V);
+        const scalar sumW = gSum(w);
+        if (dV != 0 && sumW > mag(dV))
+        {
+            const scalarField da(dV*w/sumW/V);
+            a0 += da;
+            a1 -= da;
+        }
+    }
+
+    forAll(fluids, k)
+    {
+        t.fields[fluids[k]].correctBoundaryConditions();
         alphaPhis.set(fluids[k], phiSum.set(k, nullptr).ptr());
     }
 }
