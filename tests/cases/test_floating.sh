@@ -59,7 +59,7 @@ check heavyBodySinks "$bottom0 > 0.29 and $bottom1 < 0.075 and $maxUp <= 0" \
 
 for c in archimedes sinking threeFluids; do
     drift=$(figure volumes "$WORK/$c")
-    check "${c}Volumes" "$drift < 1e-6" "largest relative phase volume drift $drift"
+    check "${c}Volumes" "$drift < 1e-12" "largest relative phase volume drift $drift"
 done
 read -r lo hi <<< "$(alphaRange "$WORK/threeFluids/log.vheFoam")"
 check threeFluidsBounded "$lo > -1e-6 and $hi < 1 + 1e-6" "alpha in [$lo, $hi]"

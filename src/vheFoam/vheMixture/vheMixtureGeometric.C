@@ -225,35 +225,43 @@ void Foam::vheMixture::fluidShares
         }
     }
 
-    // Two fluids: the clipping of the shares (and a cell the step empties
-    // of fluid) must not move volume from one fluid to the other.  The
-    // first fluid's volume is set to its old one less what its flux took
-    // through the boundary, by moving the difference between the two in
-    // the cells that hold both (in the splashing dam break 3e-8 of the
-    // liquid's volume had turned into gas by t = 2)
-    if (nF == 2)
+    // The clipping of the shares (and a cell the step empties of fluid)
+    // must not move volume from one fluid to another (in the splashing dam
+    // break 3.0e-8 of the liquid's volume had turned into gas by t = 2).
+    // Each fluid but the last is set to its old volume less what its flux
+    // took through the boundary, by moving the difference between it and
+    // the later fluid it shares most with, in the cells that hold both;
+    // the last fluid is the rest
+    const scalarField& V = mesh_.V();
+    for (label k = 0; k < nF - 1; ++k)
     {
-        const scalarField& V = mesh_.V();
-        scalarField& a0 = t.fields[fluids[0]].primitiveFieldRef();
-        scalarField& a1 = t.fields[fluids[1]].primitiveFieldRef();
+        scalarField& ak = t.fields[fluids[k]].primitiveFieldRef();
         scalar outflow = 0;
         forAll(mesh_.boundary(), patchi)
         {
             if (mesh_.boundary()[patchi].coupled()) continue;
-            outflow += sum(phiSum[0].boundaryField()[patchi]);
+            outflow += sum(phiSum[k].boundaryField()[patchi]);
         }
-        const scalar target =
-            gSum(t.fields[fluids[0]].oldTime().primitiveField()*V)
-          - mesh_.time().deltaTValue()*returnReduce(outflow, sumOp<scalar>());
-        const scalar dV = target - gSum(a0*V);
-        const scalarField w(a0*a1*V);
-        const scalar sumW = gSum(w);
-        if (dV != 0 && sumW > mag(dV))
+        const scalar dV =
+            gSum(t.fields[fluids[k]].oldTime().primitiveField()*V)
+          - mesh_.time().deltaTValue()*returnReduce(outflow, sumOp<scalar>())
+          - gSum(ak*V);
+        label partner = -1;
+        scalar sumW = 0;
+        for (label j = k + 1; j < nF; ++j)
         {
-            const scalarField da(dV*w/sumW/V);
-            a0 += da;
-            a1 -= da;
+            const scalar wj = gSum(ak*t.fields[fluids[j]].primitiveField()*V);
+            if (wj > sumW)
+            {
+                partner = j;
+                sumW = wj;
+            }
         }
+        if (dV == 0 || sumW <= mag(dV)) continue;
+        scalarField& aj = t.fields[fluids[partner]].primitiveFieldRef();
+        const scalarField da(dV*ak*aj/sumW);
+        ak += da;
+        aj -= da;
     }
 
     forAll(fluids, k)
