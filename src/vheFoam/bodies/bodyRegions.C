@@ -210,37 +210,80 @@ void Foam::bodyRegions::find(const scalarField& a)
     {
         if (a[c] > threshold_) cellBody_[c] = bodyOf[regions[c]];
     }
+    // Layer by layer from the cells labelled in the previous one (the
+    // front): a cell of the next layer has all its labelled neighbours in
+    // the front, so only the front's neighbours are looked at (a pass
+    // over the whole mesh per layer was 2 % of scene B's run).  Each
+    // candidate takes the label of its neighbour of largest fraction, the
+    // first in face order on a tie
     labelList& lab = cellBody_;
+    const cellList& cells = mesh_.cells();
+    DynamicList<label> front;
+    forAll(lab, c)
+    {
+        if (lab[c] >= 0) front.append(c);
+    }
+    labelList seen(a.size(), -1);
+    DynamicList<label> next, nextLab;
+    labelList fs;
     for (label layer = 0; nB && layer < 64; ++layer)
     {
         labelList labNbr;
         syncTools::swapBoundaryCellList(mesh_, lab, labNbr);
-        labelList next(lab);
-        scalarField best(a.size(), -1.0);
-        auto offer = [&](label c, label l, scalar an)
+        next.clear();
+        const auto candidate = [&](label c)
         {
-            if (lab[c] < 0 && a[c] > 0 && l >= 0 && an > best[c])
+            if (lab[c] < 0 && a[c] > 0 && seen[c] != layer)
             {
-                best[c] = an;
-                next[c] = l;
+                seen[c] = layer;
+                next.append(c);
             }
         };
-        for (label f = 0; f < nInt; ++f)
+        for (const label c : front)
         {
-            offer(own[f], lab[nei[f]], a[nei[f]]);
-            offer(nei[f], lab[own[f]], a[own[f]]);
+            for (const label f : cells[c])
+            {
+                if (f < nInt) candidate(own[f] == c ? nei[f] : own[f]);
+            }
         }
         forAll(coupled, i)
         {
-            if (coupled[i]) offer(own[nInt + i], labNbr[i], aNbr[i]);
+            if (coupled[i] && labNbr[i] >= 0) candidate(own[nInt + i]);
         }
-        label changed = 0;
-        forAll(lab, c)
+        nextLab.setSize(next.size());
+        forAll(next, k)
         {
-            if (next[c] != lab[c]) ++changed;
+            const label c = next[k];
+            fs = cells[c];
+            Foam::sort(fs);
+            scalar best = -1;
+            label l = -1;
+            for (const label f : fs)
+            {
+                label ln = -1;
+                scalar an = 0;
+                if (f < nInt)
+                {
+                    const label o = own[f] == c ? nei[f] : own[f];
+                    ln = lab[o];
+                    an = a[o];
+                }
+                else if (coupled[f - nInt])
+                {
+                    ln = labNbr[f - nInt];
+                    an = aNbr[f - nInt];
+                }
+                if (ln >= 0 && an > best)
+                {
+                    best = an;
+                    l = ln;
+                }
+            }
+            nextLab[k] = l;
         }
-        lab.transfer(next);
-        if (returnReduce(changed, sumOp<label>()) == 0) break;
+        forAll(next, k) lab[next[k]] = nextLab[k];
+        if (returnReduce(next.size(), sumOp<label>()) == 0) break;
+        front.transfer(next);
     }
 
     // Volume and a reference point: the circular mean along periodic
