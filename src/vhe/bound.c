@@ -91,3 +91,57 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
     }
     return moved;
 }
+
+double vhe_bound_downwind(long nCells, const int *own, const int *nei,
+                          const long *cellStart, const int *cellFaces,
+                          const double *V, const double *phi, double *dVf,
+                          double *a, double dt, int nSweeps)
+{
+    const double tol = 1e-15;
+    double moved = 0.0;
+    for (int sweep = 0; sweep < nSweeps; ++sweep) {
+        long nOut = 0;
+        for (long c = 0; c < nCells; ++c) {
+            const int over = a[c] > 1.0 + tol;
+            if (!over && a[c] >= -tol) continue;
+            ++nOut;
+            /* Repeated while a face reaches its limit and some is left:
+             * the rest goes to the other downwind faces */
+            for (long pass = cellStart[c]; pass <= cellStart[c + 1]; ++pass) {
+                const double left = over ? (a[c] - 1.0) * V[c] : -a[c] * V[c];
+                if (left <= tol * V[c]) break;
+                double total = 0.0;
+                for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
+                    const int f = cellFaces[j];
+                    const double s = own[f] == c ? 1.0 : -1.0;
+                    const double out = s * phi[f] * dt;
+                    /* over: room for more of the field through the face;
+                     * under: what the face carries out */
+                    const double lim = over ? out - s * dVf[f] : s * dVf[f];
+                    if (out > 0 && lim > tol * V[c]) total += out;
+                }
+                if (total <= 0) break;
+                int capped = 0;
+                for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
+                    const int f = cellFaces[j];
+                    const double s = own[f] == c ? 1.0 : -1.0;
+                    const double out = s * phi[f] * dt;
+                    const double lim = over ? out - s * dVf[f] : s * dVf[f];
+                    if (out <= 0 || lim <= tol * V[c]) continue;
+                    double dV = left * out / total;
+                    if (dV >= lim) { dV = lim; capped = 1; }
+                    const int n = own[f] == c ? nei[f] : own[f];
+                    /* over: more leaves c; under: less leaves c */
+                    const double sg = over ? 1.0 : -1.0;
+                    dVf[f] += sg * s * dV;
+                    a[c] -= sg * dV / V[c];
+                    a[n] += sg * dV / V[n];
+                    moved += dV;
+                }
+                if (!capped) break;
+            }
+        }
+        if (nOut == 0) break;
+    }
+    return moved;
+}

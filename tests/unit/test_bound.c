@@ -72,12 +72,62 @@ START_TEST(test_bounded)
 }
 END_TEST
 
+/* Downwind bounding on a row of 6 cells (volumes 1 and 2 alternating),
+   flow to the right (phi 1, dt 1: a full face carries 1).  Cell 2 at 1.2
+   passes its excess on through face 2 until that face is full (0.95 ->
+   1: 0.05 of 0.2), the rest stays for vhe_bound_fractions; cell 4 at
+   -0.05 lets 0.05 less out through face 4.  Nothing moves upwind, the
+   volume is kept and a stays the update of dVf */
+START_TEST(test_downwind)
+{
+    enum { N = 6, F = N - 1 };
+    int own[F], nei[F], cellFaces[2 * F];
+    long cellStart[N + 1];
+    double V[N], phi[F], dVf[F], dVf0[F] = {0.5, 0.9, 0.95, 0.2, 0.3};
+    double a0[N] = {0.5, 0.6, 1.2, 0.4, -0.05, 0.1}, a[N];
+    int c, f, j = 0;
+    for (f = 0; f < F; ++f) {
+        own[f] = f; nei[f] = f + 1; phi[f] = 1.0; dVf[f] = dVf0[f];
+    }
+    for (c = 0; c < N; ++c) {
+        V[c] = c % 2 ? 2.0 : 1.0;
+        a[c] = a0[c];
+        cellStart[c] = j;
+        if (c > 0) cellFaces[j++] = c - 1;
+        if (c < N - 1) cellFaces[j++] = c;
+    }
+    cellStart[N] = j;
+    const double moved = vhe_bound_downwind(N, own, nei, cellStart,
+                                            cellFaces, V, phi, dVf, a, 1.0,
+                                            3);
+    ck_assert_double_eq_tol(moved, 0.1, 1e-15);
+    ck_assert_double_eq_tol(dVf[2], 1.0, 1e-15);
+    ck_assert_double_eq_tol(dVf[4], 0.25, 1e-15);
+    ck_assert(dVf[0] == dVf0[0] && dVf[1] == dVf0[1] && dVf[3] == dVf0[3]);
+    ck_assert_double_eq_tol(a[2], 1.15, 1e-15);
+    ck_assert_double_eq_tol(a[3], 0.425, 1e-15);
+    ck_assert_double_eq_tol(a[4], 0.0, 1e-15);
+    ck_assert_double_eq_tol(a[5], 0.075, 1e-15);
+    double v0 = 0, v1 = 0;
+    for (c = 0; c < N; ++c) {
+        double div = 0;
+        if (c > 0) div -= dVf[c - 1] - dVf0[c - 1];
+        if (c < N - 1) div += dVf[c] - dVf0[c];
+        ck_assert_double_eq_tol(a[c], a0[c] - div / V[c], 1e-15);
+        v0 += a0[c] * V[c];
+        v1 += a[c] * V[c];
+    }
+    ck_assert_double_eq_tol(v1, v0, 1e-15);
+}
+END_TEST
+
 Suite *bound_suite(void)
 {
     Suite *s = suite_create("bound");
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, test_row);
     tcase_add_test(tc, test_bounded);
+    tcase_add_test(tc, test_downwind);
     suite_add_tcase(s, tc);
     return s;
 }

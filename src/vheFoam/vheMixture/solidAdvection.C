@@ -3,8 +3,14 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidAdvection.H"
-#include "isoAdvection.H"
-#include "cyclicFvPatch.H"
+#include "cellFaceRows.H"
+#include "isoCutCell.H"
+#include "isoCutFace.H"
+#include "upwind.H"
+#include "volPointInterpolation.H"
+#include "syncTools.H"
+#include "fvc.H"
+#include "interpolationCellPoint.H"
 #include "profiling.H"
 #include "vhe.h"
 
@@ -13,49 +19,12 @@
 namespace
 {
 
-// Each inflow cyclic face takes minus its partner's outflow, and its cell
-// the difference (see the header)
-void syncCyclic
-(
-    Foam::volScalarField& alpha,
-    const Foam::surfaceScalarField& phi,
-    Foam::surfaceScalarField& alphaPhi
-)
-{
-    using namespace Foam;
-    const fvMesh& mesh = alpha.mesh();
-    const scalar deltaT = mesh.time().deltaTValue();
-    scalarField& a = alpha.primitiveFieldRef();
-    forAll(mesh.boundary(), patchi)
-    {
-        if (!isA<cyclicFvPatch>(mesh.boundary()[patchi])) continue;
-        const cyclicFvPatch& cp =
-            refCast<const cyclicFvPatch>(mesh.boundary()[patchi]);
-        const label nbr = cp.neighbPatchID();
-        const scalarField& phiP = phi.boundaryField()[patchi];
-        scalarField& F = alphaPhi.boundaryFieldRef()[patchi];
-        scalarField& Fn = alphaPhi.boundaryFieldRef()[nbr];
-        const labelUList& fc = cp.faceCells();
-        const labelUList& fcn = mesh.boundary()[nbr].faceCells();
-        forAll(fc, k)
-        {
-            if (phiP[k] >= 0) continue;
-            const label c = fc[k], cn = fcn[k];
-            a[c] += (F[k] + Fn[k])*deltaT/mesh.V()[c];
-            // isoAdvection bounded the cell with the upwind inflow: what
-            // would take it out of [0, 1] stays on the outflow side
-            const scalar over =
-                (max(a[c] - 1, scalar(0)) + min(a[c], scalar(0)))
-               *mesh.V()[c];
-            a[c] -= over/mesh.V()[c];
-            a[cn] += over/mesh.V()[cn];
-            Fn[k] -= over/deltaT;
-            F[k] = -Fn[k];
-        }
-    }
-    // every rank (a processor patch's exchange)
-    alpha.correctBoundaryConditions();
-}
+using namespace Foam;
+
+// A fraction strictly between these is a surface cell (isoAdvection's
+// surfCellTol) and its isosurface is found to isoFaceTol
+const scalar surfCellTol = 1e-8;
+const scalar isoFaceTol = 1e-8;
 
 } // End anonymous namespace
 
@@ -71,27 +40,108 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
 {
     addProfiling(iso, "vheMixture::isoAdvection");
 
+    const fvMesh& mesh = alpha.mesh();
+    const scalar dt = mesh.time().deltaTValue();
+    const label nInt = mesh.nInternalFaces();
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+
     // From the step's start (a PIMPLE outer iteration transports again)
     alpha == alpha.oldTime();
+    const scalarField& a = alpha.primitiveField();
 
-    // isoAdvection's clip is not conservative: bound() does it instead
-    const_cast<dictionary&>(alpha.mesh().solverDict(alpha.name()))
-        .set("clip", false);
+    // The volume through each face over the step: the upwind fraction's,
+    // and at the downwind faces of each surface cell the volume its
+    // isosurface sweeps
+    tmp<surfaceScalarField> tdVf
+    (
+        upwind<scalar>(mesh, phi).flux(alpha)*mesh.time().deltaT()
+    );
+    surfaceScalarField& dVf = tdVf.ref();
+    scalarField& dVfi = dVf.primitiveFieldRef();
+    const scalarField& phii = phi.primitiveField();
+    const scalarField& magSf = mesh.magSf().primitiveField();
 
-    const dimensionedScalar one("one", dimDensity, 1.0);
-    const dimensionedScalar zero("zero", dimDensity, 0.0);
-    tmp<surfaceScalarField> talphaPhi;
+    pointScalarField ap(volPointInterpolation::New(mesh).interpolate(alpha));
+    isoCutCell cutCell(mesh, ap.primitiveFieldRef());
+    isoCutFace cutFace(mesh, ap.primitiveFieldRef());
+    interpolationCellPoint<vector> UInterp(U);
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    forAll(a, c)
     {
-        const int level = messageStream::level;
-        messageStream::level = 0;
-        isoAdvection advector(alpha, phi, U);
-        advector.advect();
-        messageStream::level = level;
-        talphaPhi = advector.getRhoPhi(one, zero)/one;
+        if (a[c] <= surfCellTol || a[c] >= 1 - surfCellTol) continue;
+        if (cutCell.vofCutCell(c, a[c], isoFaceTol, 100) != 0) continue;
+
+        const scalar f0 = cutCell.isoValue();
+        const point x0 = cutCell.isoFaceCentre();
+        const vector n0 = normalised(cutCell.isoFaceArea());
+        const scalar Un0 = UInterp.interpolate(x0, c) & n0;
+
+        for (const label f : mesh.cells()[c])
+        {
+            if (f < nInt)
+            {
+                const scalar out = own[f] == c ? phii[f] : -phii[f];
+                if (out <= 10*SMALL) continue;
+                dVfi[f] = cutFace.timeIntegratedFaceFlux
+                (
+                    f, x0, n0, Un0, f0, dt, phii[f], magSf[f]
+                );
+                continue;
+            }
+            const label patchi = patches.whichPatch(f);
+            const scalarField& phip = phi.boundaryField()[patchi];
+            if (phip.empty()) continue;
+            const label i = f - patches[patchi].start();
+            if (phip[i] <= 10*SMALL) continue;
+            dVf.boundaryFieldRef()[patchi][i] = cutFace.timeIntegratedFaceFlux
+            (
+                f, x0, n0, Un0, f0, dt, phip[i],
+                mesh.magSf().boundaryField()[patchi][i]
+            );
+        }
     }
-    talphaPhi.ref().rename("alphaPhi." + alpha.name());
-    syncCyclic(alpha, phi, talphaPhi.ref());
-    return talphaPhi;
+
+    // The two sides of a coupled face (processor, cyclic) agree: the inflow
+    // side takes minus the outflow side's volume
+    scalarField across(mesh.nBoundaryFaces(), Zero);
+    forAll(patches, patchi)
+    {
+        if (!patches[patchi].coupled()) continue;
+        SubList<scalar>
+        (
+            across, patches[patchi].size(), patches[patchi].start() - nInt
+        ) = dVf.boundaryField()[patchi];
+    }
+    syncTools::swapBoundaryFaceList(mesh, across);
+    forAll(patches, patchi)
+    {
+        if (!patches[patchi].coupled()) continue;
+        const scalarField& phip = phi.boundaryField()[patchi];
+        scalarField& dVp = dVf.boundaryFieldRef()[patchi];
+        const label start = patches[patchi].start() - nInt;
+        forAll(dVp, i)
+        {
+            if (phip[i] < 0) dVp[i] = -across[start + i];
+        }
+    }
+
+    alpha.primitiveFieldRef() -= fvc::surfaceIntegrate(dVf)().primitiveField();
+
+    // Out of [0, 1] where a flux went wrong: put back through the cell's
+    // downwind faces (internal); the rest is bound()'s
+    const cellFaceRows& rows = cellFaceRows::New(mesh);
+    vhe_bound_downwind
+    (
+        mesh.nCells(), own.cdata(), nei.cdata(), rows.start(), rows.faces(),
+        mesh.V().cdata(), phii.cdata(), dVfi.data(),
+        alpha.primitiveFieldRef().data(), dt, 3
+    );
+    alpha.correctBoundaryConditions();
+
+    dVf /= mesh.time().deltaT();
+    dVf.rename("alphaPhi." + alpha.name());
+    return tdVf;
 }
 
 
@@ -105,21 +155,8 @@ Foam::scalar Foam::solidAdvection::bound
     const label nS = fields.size();
     if (nS == 0) return 0;
     const fvMesh& mesh = fields[0].mesh();
-    const label nInt = mesh.nInternalFaces();
 
-    // Each cell's internal faces (compressed rows, C core)
-    const cellList& cells = mesh.cells();
-    List<long> start(mesh.nCells() + 1, long(0));
-    DynamicList<int> faces(2*nInt);
-    forAll(cells, c)
-    {
-        start[c] = faces.size();
-        for (const label f : cells[c])
-        {
-            if (f < nInt) faces.append(f);
-        }
-    }
-    start[mesh.nCells()] = faces.size();
+    const cellFaceRows& rows = cellFaceRows::New(mesh);
 
     List<scalar*> a(nS), F(nS);
     forAll(fields, k)
@@ -131,7 +168,7 @@ Foam::scalar Foam::solidAdvection::bound
     const scalar moved = vhe_bound_fractions
     (
         mesh.nCells(), mesh.owner().cdata(), mesh.neighbour().cdata(),
-        start.cdata(), faces.cdata(), mesh.V().cdata(), nS, a.data(),
+        rows.start(), rows.faces(), mesh.V().cdata(), nS, a.data(),
         F.data(), deltaT, work.data(), 10
     );
 
