@@ -95,15 +95,16 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
 double vhe_bound_downwind(long nCells, const int *own, const int *nei,
                           const long *cellStart, const int *cellFaces,
                           const double *V, const double *phi, double *dVf,
-                          double *a, double dt, int nSweeps)
+                          double *a, double dt, const unsigned char *check,
+                          int above, int below, double tol, int nSweeps)
 {
-    const double tol = 1e-15;
     double moved = 0.0;
     for (int sweep = 0; sweep < nSweeps; ++sweep) {
         long nOut = 0;
         for (long c = 0; c < nCells; ++c) {
-            const int over = a[c] > 1.0 + tol;
-            if (!over && a[c] >= -tol) continue;
+            if (check && !check[c]) continue;
+            const int over = above && a[c] > 1.0 + tol;
+            if (!over && !(below && a[c] < -tol)) continue;
             ++nOut;
             /* Repeated while a face reaches its limit and some is left:
              * the rest goes to the other downwind faces */

@@ -728,21 +728,23 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
                            int nSweeps);
 
 /* vhe_bound_downwind: one fraction field a (after its fluxes' update) put
- *   back into [0, 1] the way the flux went wrong: a cell above 1 passes
- *   the excess on through its downwind internal faces (outflow phi > 0
- *   from the cell), in proportion to their outflow and up to a full face
- *   (dVf = phi dt); a cell below 0 lets less out through its downwind
- *   faces, in proportion to their outflow and down to none (dVf = 0).
- *   (isoAdvector's conservative bounding, Roenby et al. 2016.)  dVf [m^3]
- *   is the volume over each internal face over the step (positive from
- *   owner to neighbour), phi the volume flux [m^3/s]; both stay in step
- *   with a.  Up to nSweeps passes; what is left (no downwind room) is for
+ *   back into [0, 1] the way the flux went wrong: (above) a cell above
+ *   1 + tol passes the excess on through its downwind internal faces
+ *   (outflow phi > 0 from the cell), in proportion to their outflow and up
+ *   to a full face (dVf = phi dt); (below) a cell below -tol lets less out
+ *   through its downwind faces, in proportion to their outflow and down to
+ *   none (dVf = 0).  (isoAdvector's conservative bounding, Roenby et al.
+ *   2016.)  dVf [m^3] is the volume over each internal face over the step
+ *   (positive from owner to neighbour), phi the volume flux [m^3/s]; both
+ *   stay in step with a.  Only cells with check[c] != 0 (all if check is
+ *   NULL).  Up to nSweeps passes; what is left (no downwind room) is for
  *   vhe_bound_fractions.  Returns the volume moved.
  */
 double vhe_bound_downwind(long nCells, const int *own, const int *nei,
                           const long *cellStart, const int *cellFaces,
                           const double *V, const double *phi, double *dVf,
-                          double *a, double dt, int nSweeps);
+                          double *a, double dt, const unsigned char *check,
+                          int above, int below, double tol, int nSweeps);
 
 #ifdef __cplusplus
 }

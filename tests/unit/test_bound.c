@@ -99,7 +99,7 @@ START_TEST(test_downwind)
     cellStart[N] = j;
     const double moved = vhe_bound_downwind(N, own, nei, cellStart,
                                             cellFaces, V, phi, dVf, a, 1.0,
-                                            3);
+                                            NULL, 1, 1, 1e-15, 3);
     ck_assert_double_eq_tol(moved, 0.1, 1e-15);
     ck_assert_double_eq_tol(dVf[2], 1.0, 1e-15);
     ck_assert_double_eq_tol(dVf[4], 0.25, 1e-15);
@@ -118,6 +118,22 @@ START_TEST(test_downwind)
         v1 += a[c] * V[c];
     }
     ck_assert_double_eq_tol(v1, v0, 1e-15);
+
+    /* Only what is asked: from above alone, or cells outside check, leave
+       the others as they are */
+    double b[N] = {0.5, 0.6, 1.2, 0.4, -0.05, 0.1};
+    for (f = 0; f < F; ++f) dVf[f] = dVf0[f];
+    vhe_bound_downwind(N, own, nei, cellStart, cellFaces, V, phi, dVf, b,
+                       1.0, NULL, 1, 0, 1e-15, 3);
+    ck_assert(b[4] == -0.05 && dVf[4] == dVf0[4]);
+    ck_assert_double_eq_tol(b[2], 1.15, 1e-15);
+    const unsigned char check[N] = {1, 1, 0, 1, 1, 1};
+    double e[N] = {0.5, 0.6, 1.2, 0.4, -0.05, 0.1};
+    for (f = 0; f < F; ++f) dVf[f] = dVf0[f];
+    vhe_bound_downwind(N, own, nei, cellStart, cellFaces, V, phi, dVf, e,
+                       1.0, check, 1, 1, 1e-15, 3);
+    ck_assert(e[2] == 1.2 && dVf[2] == dVf0[2]);
+    ck_assert_double_eq_tol(e[4], 0.0, 1e-15);
 }
 END_TEST
 

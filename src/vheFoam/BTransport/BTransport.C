@@ -71,11 +71,8 @@ Foam::BTransport::workspace& Foam::BTransport::work() const
     }
     w.nCells = nCells;
     w.nFaces = nFaces;
-    w.V.setSize(9*nCells);
-    forAll(w.V, i)
-    {
-        w.V[i] = (i % 9) % 4 == 0 ? 1 : 0;
-    }
+    w.cells.clear();
+    w.V.clear();
     w.index.setSize(nCells);
     w.index = -1;
     // Coupled (processor, cyclic) faces anywhere: their neighbours' values

@@ -52,11 +52,18 @@ void Foam::BTransport::advectLog
     {
         delta[i] = C[r.nei[i]] - C[r.own[i]];
     }
-    // Each cell's eigenvectors of B, from the last step
+    // Each cell's eigenvectors of B, from the last step (the identity for
+    // a cell new to the region; both cell lists ascend)
     scalarField V(9*n);
-    forAll(r.cells, i)
+    for (label i = 0, j = 0; i < n; ++i)
     {
-        for (direction k = 0; k < 9; ++k) V[9*i + k] = w.V[9*r.cells[i] + k];
+        const label c = r.cells[i];
+        while (j < w.cells.size() && w.cells[j] < c) ++j;
+        const bool had = j < w.cells.size() && w.cells[j] == c;
+        for (direction k = 0; k < 9; ++k)
+        {
+            V[9*i + k] = had ? w.V[9*j + k] : (k % 4 == 0 ? 1 : 0);
+        }
     }
 
     // Psi = log B of the old step
@@ -284,8 +291,9 @@ void Foam::BTransport::advectLog
     forAll(r.cells, i)
     {
         B[r.cells[i]] = Bs[i];
-        for (direction k = 0; k < 9; ++k) w.V[9*r.cells[i] + k] = V[9*i + k];
     }
+    w.cells = r.cells;
+    w.V.transfer(V);
 }
 
 

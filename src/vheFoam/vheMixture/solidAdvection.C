@@ -26,6 +26,9 @@ using namespace Foam;
 const scalar surfCellTol = 1e-8;
 const scalar isoFaceTol = 1e-8;
 
+// The bounding acts once a fraction is out of [0, 1] by more than this
+const scalar boundTol = 1e-12;
+
 } // End anonymous namespace
 
 
@@ -67,9 +70,11 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     isoCutFace cutFace(mesh, ap.primitiveFieldRef());
     interpolationCellPoint<vector> UInterp(U);
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    List<unsigned char> surface(a.size(), static_cast<unsigned char>(0));
     forAll(a, c)
     {
         if (a[c] <= surfCellTol || a[c] >= 1 - surfCellTol) continue;
+        surface[c] = 1;
         if (cutCell.vofCutCell(c, a[c], isoFaceTol, 100) != 0) continue;
 
         const scalar f0 = cutCell.isoValue();
@@ -129,14 +134,37 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     alpha.primitiveFieldRef() -= fvc::surfaceIntegrate(dVf)().primitiveField();
 
     // Out of [0, 1] where a flux went wrong: put back through the cell's
-    // downwind faces (internal); the rest is bound()'s
-    const cellFaceRows& rows = cellFaceRows::New(mesh);
-    vhe_bound_downwind
-    (
-        mesh.nCells(), own.cdata(), nei.cdata(), rows.start(), rows.faces(),
-        mesh.V().cdata(), phii.cdata(), dVfi.data(),
-        alpha.primitiveFieldRef().data(), dt, 3
-    );
+    // downwind faces (internal), in the surface cells and two layers of
+    // face neighbours, where the geometric fluxes act, once something is
+    // out by more than boundTol anywhere (as isoAdvection did); the rest
+    // (a body's interior at 1 - dt div(phi)) is bound()'s and settle()'s
+    const scalar over = gMax(alpha.primitiveField()) - 1;
+    const scalar under = gMin(alpha.primitiveField());
+    if (over > boundTol || under < -boundTol)
+    {
+        const cellFaceRows& rows = cellFaceRows::New(mesh);
+        List<unsigned char> check(surface);
+        for (label ring = 0; ring < 2; ++ring)
+        {
+            const List<unsigned char> last(check);
+            forAll(last, c)
+            {
+                if (!last[c]) continue;
+                for (long j = rows.start()[c]; j < rows.start()[c + 1]; ++j)
+                {
+                    const label f = rows.faces()[j];
+                    check[own[f] == c ? nei[f] : own[f]] = 1;
+                }
+            }
+        }
+        vhe_bound_downwind
+        (
+            mesh.nCells(), own.cdata(), nei.cdata(), rows.start(),
+            rows.faces(), mesh.V().cdata(), phii.cdata(), dVfi.data(),
+            alpha.primitiveFieldRef().data(), dt, check.cdata(),
+            over > boundTol, under < -boundTol, 10*SMALL, 3
+        );
+    }
     alpha.correctBoundaryConditions();
 
     dVf /= mesh.time().deltaT();
