@@ -15,11 +15,11 @@ static void bound_move(int k, int c, int n, int f, double dV, const int *own,
     *moved += dV;
 }
 
-double vhe_bound_fractions(long nCells, const int *own, const int *nei,
-                           const long *cellStart, const int *cellFaces,
-                           const double *V, int nS, double *const *a,
-                           double *const *flux, double dt, double *s,
-                           int nSweeps)
+double vhe_bound_fractions(long nCells, long nInt, const int *own,
+                           const int *nei, const long *cellStart,
+                           const int *cellFaces, const double *V, int nS,
+                           double *const *a, double *const *flux, double dt,
+                           double *s, int nSweeps)
 {
     const double tol = 1e-15;
     double moved = 0.0;
@@ -34,6 +34,7 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
                 double held = 0.0;
                 for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
                     const int f = cellFaces[j];
+                    if (f >= nInt) continue;
                     const int n = own[f] == c ? nei[f] : own[f];
                     if (a[k][n] > 0) held += a[k][n] * V[n];
                 }
@@ -42,6 +43,7 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
                 const double take = need < held ? need : held;
                 for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
                     const int f = cellFaces[j];
+                    if (f >= nInt) continue;
                     const int n = own[f] == c ? nei[f] : own[f];
                     if (a[k][n] <= 0) continue;
                     bound_move(k, n, (int)c, f, take * a[k][n] * V[n] / held,
@@ -66,6 +68,7 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
             double room = 0.0;
             for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
                 const int f = cellFaces[j];
+                if (f >= nInt) continue;
                 const int n = own[f] == c ? nei[f] : own[f];
                 if (s[n] < 1.0) room += (1.0 - s[n]) * V[n];
             }
@@ -74,6 +77,7 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
             const double give = excess < room ? excess : room;
             for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
                 const int f = cellFaces[j];
+                if (f >= nInt) continue;
                 const int n = own[f] == c ? nei[f] : own[f];
                 if (s[n] >= 1.0) continue;
                 const double dV = give * (1.0 - s[n]) * V[n] / room;
@@ -92,11 +96,12 @@ double vhe_bound_fractions(long nCells, const int *own, const int *nei,
     return moved;
 }
 
-double vhe_bound_downwind(long nCells, const int *own, const int *nei,
-                          const long *cellStart, const int *cellFaces,
-                          const double *V, const double *phi, double *dVf,
-                          double *a, double dt, const unsigned char *check,
-                          int above, int below, double tol, int nSweeps)
+double vhe_bound_downwind(long nCells, long nInt, const int *own,
+                          const int *nei, const long *cellStart,
+                          const int *cellFaces, const double *V,
+                          const double *phi, double *dVf, double *a,
+                          double dt, const unsigned char *check, int above,
+                          int below, double tol, int nSweeps)
 {
     double moved = 0.0;
     for (int sweep = 0; sweep < nSweeps; ++sweep) {
@@ -131,12 +136,14 @@ double vhe_bound_downwind(long nCells, const int *own, const int *nei,
                     if (out <= 0 || lim <= tol * V[c]) continue;
                     double dV = left * out / total;
                     if (dV >= lim) { dV = lim; capped = 1; }
-                    const int n = own[f] == c ? nei[f] : own[f];
                     /* over: more leaves c; under: less leaves c */
                     const double sg = over ? 1.0 : -1.0;
                     dVf[f] += sg * s * dV;
                     a[c] -= sg * dV / V[c];
-                    a[n] += sg * dV / V[n];
+                    if (f < nInt) {
+                        const int n = own[f] == c ? nei[f] : own[f];
+                        a[n] += sg * dV / V[n];
+                    }
                     moved += dV;
                 }
                 if (!capped) break;

@@ -710,8 +710,9 @@ int vhe_anderson_gamma(int m, const double *gram, const double *b,
  * vhe_bound_fractions: nS fraction fields a[k] over nCells cells with
  *   volumes V, carried one by one (so each may leave [0, 1] a little and
  *   their sum exceed 1), brought into bounds by moving volume over internal
- *   faces (own/nei; the internal faces of cell c are cellFaces[cellStart[c]
- *   .. cellStart[c+1]-1]): a fraction below 0 takes what it lacks from the
+ *   faces (own/nei; the faces of cell c are cellFaces[cellStart[c] ..
+ *   cellStart[c+1]-1], those from nInt on boundary faces, skipped): a
+ *   fraction below 0 takes what it lacks from the
  *   neighbours holding that field, in proportion to what they hold; a
  *   cell whose fields sum above 1 gives the excess to its neighbours with
  *   room (1 - sum), in proportion to the room, each field's part in
@@ -721,30 +722,33 @@ int vhe_anderson_gamma(int m, const double *gram, const double *b,
  *   work space and ends as the sum.  Volumes are kept to round-off.
  *   Returns the volume moved.
  */
-double vhe_bound_fractions(long nCells, const int *own, const int *nei,
-                           const long *cellStart, const int *cellFaces,
-                           const double *V, int nS, double *const *a,
-                           double *const *flux, double dt, double *s,
-                           int nSweeps);
+double vhe_bound_fractions(long nCells, long nInt, const int *own,
+                           const int *nei, const long *cellStart,
+                           const int *cellFaces, const double *V, int nS,
+                           double *const *a, double *const *flux, double dt,
+                           double *s, int nSweeps);
 
 /* vhe_bound_downwind: one fraction field a (after its fluxes' update) put
  *   back into [0, 1] the way the flux went wrong: (above) a cell above
- *   1 + tol passes the excess on through its downwind internal faces
+ *   1 + tol passes the excess on through its downwind faces
  *   (outflow phi > 0 from the cell), in proportion to their outflow and up
  *   to a full face (dVf = phi dt); (below) a cell below -tol lets less out
  *   through its downwind faces, in proportion to their outflow and down to
  *   none (dVf = 0).  (isoAdvector's conservative bounding, Roenby et al.
- *   2016.)  dVf [m^3] is the volume over each internal face over the step
- *   (positive from owner to neighbour), phi the volume flux [m^3/s]; both
- *   stay in step with a.  Only cells with check[c] != 0 (all if check is
+ *   2016.)  dVf [m^3] is the volume over each face over the step
+ *   (positive out of the owner), phi the volume flux [m^3/s]; both stay in
+ *   step with a.  Faces from nInt on are boundary faces (own only): what
+ *   passes through one leaves a (the caller gives a coupled face's volume
+ *   to the cell on its other side).  Only cells with check[c] != 0 (all if check is
  *   NULL).  Up to nSweeps passes; what is left (no downwind room) is for
  *   vhe_bound_fractions.  Returns the volume moved.
  */
-double vhe_bound_downwind(long nCells, const int *own, const int *nei,
-                          const long *cellStart, const int *cellFaces,
-                          const double *V, const double *phi, double *dVf,
-                          double *a, double dt, const unsigned char *check,
-                          int above, int below, double tol, int nSweeps);
+double vhe_bound_downwind(long nCells, long nInt, const int *own,
+                          const int *nei, const long *cellStart,
+                          const int *cellFaces, const double *V,
+                          const double *phi, double *dVf, double *a,
+                          double dt, const unsigned char *check, int above,
+                          int below, double tol, int nSweeps);
 
 #ifdef __cplusplus
 }

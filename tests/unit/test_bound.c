@@ -31,7 +31,7 @@ START_TEST(test_row)
     cellStart[N] = j;
     for (k = 0; k < S; ++k)
         for (c = 0; c < N; ++c) a[k][c] = a0[k][c];
-    const double moved = vhe_bound_fractions(N, own, nei, cellStart,
+    const double moved = vhe_bound_fractions(N, F, own, nei, cellStart,
                                              cellFaces, V, S, ap, fp, dt, s,
                                              10);
     ck_assert(moved > 0);
@@ -66,8 +66,8 @@ START_TEST(test_bounded)
     long cellStart[3] = {0, 1, 2};
     double V[2] = {1, 1}, a[2] = {0.0, 1.0}, flux[1] = {0}, s[2];
     double *ap[1] = {a}, *fp[1] = {flux};
-    ck_assert(vhe_bound_fractions(2, own, nei, cellStart, cellFaces, V, 1, ap,
-                                  fp, 1.0, s, 10) == 0.0);
+    ck_assert(vhe_bound_fractions(2, 1, own, nei, cellStart, cellFaces, V, 1,
+                                  ap, fp, 1.0, s, 10) == 0.0);
     ck_assert(a[0] == 0.0 && a[1] == 1.0 && flux[0] == 0.0);
 }
 END_TEST
@@ -97,7 +97,7 @@ START_TEST(test_downwind)
         if (c < N - 1) cellFaces[j++] = c;
     }
     cellStart[N] = j;
-    const double moved = vhe_bound_downwind(N, own, nei, cellStart,
+    const double moved = vhe_bound_downwind(N, F, own, nei, cellStart,
                                             cellFaces, V, phi, dVf, a, 1.0,
                                             NULL, 1, 1, 1e-15, 3);
     ck_assert_double_eq_tol(moved, 0.1, 1e-15);
@@ -123,17 +123,34 @@ START_TEST(test_downwind)
        the others as they are */
     double b[N] = {0.5, 0.6, 1.2, 0.4, -0.05, 0.1};
     for (f = 0; f < F; ++f) dVf[f] = dVf0[f];
-    vhe_bound_downwind(N, own, nei, cellStart, cellFaces, V, phi, dVf, b,
+    vhe_bound_downwind(N, F, own, nei, cellStart, cellFaces, V, phi, dVf, b,
                        1.0, NULL, 1, 0, 1e-15, 3);
     ck_assert(b[4] == -0.05 && dVf[4] == dVf0[4]);
     ck_assert_double_eq_tol(b[2], 1.15, 1e-15);
     const unsigned char check[N] = {1, 1, 0, 1, 1, 1};
     double e[N] = {0.5, 0.6, 1.2, 0.4, -0.05, 0.1};
     for (f = 0; f < F; ++f) dVf[f] = dVf0[f];
-    vhe_bound_downwind(N, own, nei, cellStart, cellFaces, V, phi, dVf, e,
+    vhe_bound_downwind(N, F, own, nei, cellStart, cellFaces, V, phi, dVf, e,
                        1.0, check, 1, 1, 1e-15, 3);
     ck_assert(e[2] == 1.2 && dVf[2] == dVf0[2]);
     ck_assert_double_eq_tol(e[4], 0.0, 1e-15);
+}
+END_TEST
+
+/* A boundary face (index nInt on) takes what its cell passes on and no
+   cell receives it: two cells, face 0 internal (0 -> 1), face 1 cell 1's
+   outlet; cell 1 at 1.1 passes 0.1 out through the outlet */
+START_TEST(test_downwind_boundary)
+{
+    int own[2] = {0, 1}, nei[1] = {1}, cellFaces[3] = {0, 0, 1};
+    long cellStart[3] = {0, 1, 3};
+    double V[2] = {1, 1}, phi[2] = {1, 1}, dVf[2] = {0.5, 0.9};
+    double a[2] = {0.5, 1.1};
+    vhe_bound_downwind(2, 1, own, nei, cellStart, cellFaces, V, phi, dVf, a,
+                       1.0, NULL, 1, 1, 1e-15, 3);
+    ck_assert_double_eq_tol(a[1], 1.0, 1e-15);
+    ck_assert_double_eq_tol(dVf[1], 1.0, 1e-15);
+    ck_assert(a[0] == 0.5 && dVf[0] == 0.5);
 }
 END_TEST
 
@@ -144,6 +161,7 @@ Suite *bound_suite(void)
     tcase_add_test(tc, test_row);
     tcase_add_test(tc, test_bounded);
     tcase_add_test(tc, test_downwind);
+    tcase_add_test(tc, test_downwind_boundary);
     suite_add_tcase(s, tc);
     return s;
 }

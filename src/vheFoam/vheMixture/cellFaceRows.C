@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  vheFoam: each cell's internal faces as compressed rows
+  vheFoam: each cell's faces as compressed rows
 \*---------------------------------------------------------------------------*/
 
 #include "cellFaceRows.H"
@@ -13,7 +13,7 @@ Foam::cellFaceRows::cellFaceRows(const fvMesh& mesh)
 :
     MeshObject<fvMesh, Foam::TopologicalMeshObject, cellFaceRows>(mesh),
     start_(mesh.nCells() + 1, long(0)),
-    faces_(2*mesh.nInternalFaces())
+    faces_(2*mesh.nInternalFaces() + mesh.nBoundaryFaces())
 {
     const label nInt = mesh.nInternalFaces();
     label j = 0;
@@ -23,6 +23,10 @@ Foam::cellFaceRows::cellFaceRows(const fvMesh& mesh)
         for (const label f : mesh.cells()[c])
         {
             if (f < nInt) faces_[j++] = f;
+        }
+        for (const label f : mesh.cells()[c])
+        {
+            if (f >= nInt) faces_[j++] = f;
         }
     }
     start_[mesh.nCells()] = j;

@@ -134,15 +134,20 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     alpha.primitiveFieldRef() -= fvc::surfaceIntegrate(dVf)().primitiveField();
 
     // Out of [0, 1] where a flux went wrong: put back through the cell's
-    // downwind faces (internal), in the surface cells and two layers of
-    // face neighbours, where the geometric fluxes act, once something is
-    // out by more than boundTol anywhere (as isoAdvection did); the rest
-    // (a body's interior at 1 - dt div(phi)) is bound()'s and settle()'s
+    // downwind faces, in the surface cells and two layers of face
+    // neighbours, where the geometric fluxes act, once something is out by
+    // more than boundTol anywhere (as isoAdvection did); the rest (a
+    // body's interior at 1 - dt div(phi)) is bound()'s and settle()'s.
+    // Three passes, after each of which the two sides of every coupled
+    // face agree again (the receiving cell takes the change), so that a
+    // processor face bounds as the internal face it is in serial
     const scalar over = gMax(alpha.primitiveField()) - 1;
     const scalar under = gMin(alpha.primitiveField());
     if (over > boundTol || under < -boundTol)
     {
         const cellFaceRows& rows = cellFaceRows::New(mesh);
+        const labelList& fOwn = mesh.faceOwner();
+        const scalarField& V = mesh.V();
         List<unsigned char> check(surface);
         for (label ring = 0; ring < 2; ++ring)
         {
@@ -153,17 +158,58 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
                 for (long j = rows.start()[c]; j < rows.start()[c + 1]; ++j)
                 {
                     const label f = rows.faces()[j];
-                    check[own[f] == c ? nei[f] : own[f]] = 1;
+                    if (f < nInt) check[own[f] == c ? nei[f] : own[f]] = 1;
                 }
             }
         }
-        vhe_bound_downwind
-        (
-            mesh.nCells(), own.cdata(), nei.cdata(), rows.start(),
-            rows.faces(), mesh.V().cdata(), phii.cdata(), dVfi.data(),
-            alpha.primitiveFieldRef().data(), dt, check.cdata(),
-            over > boundTol, under < -boundTol, 10*SMALL, 3
-        );
+
+        // Every face's flux and volume in one array, the boundary faces in
+        // mesh order (none on empty patches)
+        scalarField phiAll(mesh.nFaces(), Zero), dVAll(mesh.nFaces(), Zero);
+        SubList<scalar>(phiAll, nInt) = phii;
+        SubList<scalar>(dVAll, nInt) = dVfi;
+        forAll(patches, patchi)
+        {
+            const scalarField& pp = phi.boundaryField()[patchi];
+            const label start = patches[patchi].start();
+            SubList<scalar>(phiAll, pp.size(), start) = pp;
+            SubList<scalar>(dVAll, pp.size(), start) =
+                dVf.boundaryField()[patchi];
+        }
+
+        scalarField& ai = alpha.primitiveFieldRef();
+        for (label pass = 0; pass < 3; ++pass)
+        {
+            vhe_bound_downwind
+            (
+                mesh.nCells(), nInt, fOwn.cdata(), nei.cdata(), rows.start(),
+                rows.faces(), V.cdata(), phiAll.cdata(), dVAll.data(),
+                ai.data(), dt, check.cdata(), over > boundTol,
+                under < -boundTol, 10*SMALL, 1
+            );
+            scalarField other(SubList<scalar>(dVAll, mesh.nBoundaryFaces(), nInt));
+            syncTools::swapBoundaryFaceList(mesh, other);
+            forAll(patches, patchi)
+            {
+                if (!patches[patchi].coupled()) continue;
+                const label start = patches[patchi].start();
+                forAll(patches[patchi], i)
+                {
+                    const label f = start + i;
+                    if (phiAll[f] >= 0) continue;
+                    const scalar v = -other[f - nInt];
+                    ai[fOwn[f]] -= (v - dVAll[f])/V[fOwn[f]];
+                    dVAll[f] = v;
+                }
+            }
+        }
+
+        dVfi = SubList<scalar>(dVAll, nInt);
+        forAll(patches, patchi)
+        {
+            scalarField& dVp = dVf.boundaryFieldRef()[patchi];
+            dVp = SubList<scalar>(dVAll, dVp.size(), patches[patchi].start());
+        }
     }
     alpha.correctBoundaryConditions();
 
@@ -195,8 +241,9 @@ Foam::scalar Foam::solidAdvection::bound
     scalarField work(mesh.nCells());
     const scalar moved = vhe_bound_fractions
     (
-        mesh.nCells(), mesh.owner().cdata(), mesh.neighbour().cdata(),
-        rows.start(), rows.faces(), mesh.V().cdata(), nS, a.data(),
+        mesh.nCells(), mesh.nInternalFaces(), mesh.owner().cdata(),
+        mesh.neighbour().cdata(), rows.start(), rows.faces(),
+        mesh.V().cdata(), nS, a.data(),
         F.data(), deltaT, work.data(), 10
     );
 
