@@ -187,7 +187,10 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
                 ai.data(), dt, check.cdata(), over > boundTol,
                 under < -boundTol, 10*SMALL, 1
             );
-            scalarField other(SubList<scalar>(dVAll, mesh.nBoundaryFaces(), nInt));
+            scalarField other
+            (
+                SubList<scalar>(dVAll, mesh.nBoundaryFaces(), nInt)
+            );
             syncTools::swapBoundaryFaceList(mesh, other);
             forAll(patches, patchi)
             {
