@@ -96,6 +96,20 @@ double vhe_bound_fractions(long nCells, long nInt, const int *own,
     return moved;
 }
 
+/* Face f of cell c: the volume it could carry out of c over the step
+ * (returned; <= 0 if it is no downwind face) and in *lim what it can still
+ * take: over, room for more of the field through it; under, what it
+ * carries out */
+static double downwind_face(int f, long c, const int *own, const double *phi,
+                            const double *dVf, double dt, int over,
+                            double *s, double *lim)
+{
+    *s = own[f] == c ? 1.0 : -1.0;
+    const double out = *s * phi[f] * dt;
+    *lim = over ? out - *s * dVf[f] : *s * dVf[f];
+    return out;
+}
+
 double vhe_bound_downwind(long nCells, long nInt, const int *own,
                           const int *nei, const long *cellStart,
                           const int *cellFaces, const double *V,
@@ -118,21 +132,19 @@ double vhe_bound_downwind(long nCells, long nInt, const int *own,
                 if (left <= tol * V[c]) break;
                 double total = 0.0;
                 for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
-                    const int f = cellFaces[j];
-                    const double s = own[f] == c ? 1.0 : -1.0;
-                    const double out = s * phi[f] * dt;
-                    /* over: room for more of the field through the face;
-                     * under: what the face carries out */
-                    const double lim = over ? out - s * dVf[f] : s * dVf[f];
+                    double s, lim;
+                    const double out = downwind_face(cellFaces[j], c, own,
+                                                     phi, dVf, dt, over, &s,
+                                                     &lim);
                     if (out > 0 && lim > tol * V[c]) total += out;
                 }
                 if (total <= 0) break;
                 int capped = 0;
                 for (long j = cellStart[c]; j < cellStart[c + 1]; ++j) {
                     const int f = cellFaces[j];
-                    const double s = own[f] == c ? 1.0 : -1.0;
-                    const double out = s * phi[f] * dt;
-                    const double lim = over ? out - s * dVf[f] : s * dVf[f];
+                    double s, lim;
+                    const double out = downwind_face(f, c, own, phi, dVf, dt,
+                                                     over, &s, &lim);
                     if (out <= 0 || lim <= tol * V[c]) continue;
                     double dV = left * out / total;
                     if (dV >= lim) { dV = lim; capped = 1; }

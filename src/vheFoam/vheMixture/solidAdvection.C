@@ -29,6 +29,40 @@ const scalar isoFaceTol = 1e-8;
 // The bounding acts once a fraction is out of [0, 1] by more than this
 const scalar boundTol = 1e-12;
 
+// The two sides of every coupled face (processor, cyclic) agree: each
+// inflow side takes minus its partner's outflow volume, and a, if given,
+// the change on the inflow side's cell.  phiB, dVB: every boundary face's
+// flux and volume, in mesh order
+void agreeOnCoupled
+(
+    const fvMesh& mesh,
+    const UList<scalar>& phiB,
+    UList<scalar>& dVB,
+    scalarField* a
+)
+{
+    const label nInt = mesh.nInternalFaces();
+    const labelList& fOwn = mesh.faceOwner();
+    scalarField other(dVB);
+    syncTools::swapBoundaryFaceList(mesh, other);
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (!pp.coupled()) continue;
+        forAll(pp, i)
+        {
+            const label b = pp.start() - nInt + i;
+            if (phiB[b] >= 0) continue;
+            const scalar v = -other[b];
+            if (a)
+            {
+                const label c = fOwn[nInt + b];
+                (*a)[c] -= (v - dVB[b])/mesh.V()[c];
+            }
+            dVB[b] = v;
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -107,27 +141,26 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
         }
     }
 
-    // The two sides of a coupled face (processor, cyclic) agree: the inflow
-    // side takes minus the outflow side's volume
-    scalarField across(mesh.nBoundaryFaces(), Zero);
-    forAll(patches, patchi)
+    // The two sides of every coupled face agree on the volume crossing it
     {
-        if (!patches[patchi].coupled()) continue;
-        SubList<scalar>
-        (
-            across, patches[patchi].size(), patches[patchi].start() - nInt
-        ) = dVf.boundaryField()[patchi];
-    }
-    syncTools::swapBoundaryFaceList(mesh, across);
-    forAll(patches, patchi)
-    {
-        if (!patches[patchi].coupled()) continue;
-        const scalarField& phip = phi.boundaryField()[patchi];
-        scalarField& dVp = dVf.boundaryFieldRef()[patchi];
-        const label start = patches[patchi].start() - nInt;
-        forAll(dVp, i)
+        scalarField phiB(mesh.nBoundaryFaces(), Zero);
+        scalarField dVB(mesh.nBoundaryFaces(), Zero);
+        forAll(patches, patchi)
         {
-            if (phip[i] < 0) dVp[i] = -across[start + i];
+            const label start = patches[patchi].start() - nInt;
+            const scalarField& phip = phi.boundaryField()[patchi];
+            SubList<scalar>(phiB, phip.size(), start) = phip;
+            SubList<scalar>(dVB, phip.size(), start) =
+                dVf.boundaryField()[patchi];
+        }
+        agreeOnCoupled(mesh, phiB, dVB, nullptr);
+        forAll(patches, patchi)
+        {
+            scalarField& dVp = dVf.boundaryFieldRef()[patchi];
+            dVp = SubList<scalar>
+            (
+                dVB, dVp.size(), patches[patchi].start() - nInt
+            );
         }
     }
 
@@ -187,24 +220,12 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
                 ai.data(), dt, check.cdata(), over > boundTol,
                 under < -boundTol, 10*SMALL, 1
             );
-            scalarField other
+            SubList<scalar> dVB(dVAll, mesh.nBoundaryFaces(), nInt);
+            agreeOnCoupled
             (
-                SubList<scalar>(dVAll, mesh.nBoundaryFaces(), nInt)
+                mesh, SubList<scalar>(phiAll, mesh.nBoundaryFaces(), nInt),
+                dVB, &ai
             );
-            syncTools::swapBoundaryFaceList(mesh, other);
-            forAll(patches, patchi)
-            {
-                if (!patches[patchi].coupled()) continue;
-                const label start = patches[patchi].start();
-                forAll(patches[patchi], i)
-                {
-                    const label f = start + i;
-                    if (phiAll[f] >= 0) continue;
-                    const scalar v = -other[f - nInt];
-                    ai[fOwn[f]] -= (v - dVAll[f])/V[fOwn[f]];
-                    dVAll[f] = v;
-                }
-            }
         }
 
         dVfi = SubList<scalar>(dVAll, nInt);
