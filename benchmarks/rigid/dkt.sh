@@ -13,14 +13,5 @@ tankCase "$d" 0.02 0.08 $((10*n)) $((40*n)) 1010 "$tend" 0.005 \
     "upper { material wood; shape disk; centre (0.01 0.072 0); radius 0.001; }
        lower { material wood; shape disk; centre (0.0103 0.068 0); radius 0.001; }" \
     || exit 1
-python3 - "$d/system/fvSolution" <<'PY' || exit 1
-import re, sys
-p = sys.argv[1]
-s = open(p).read()
-s, n = re.subn(r'(p_rgh\s*\{\s*)solver\s+PCG;\s*preconditioner\s+DIC;',
-              r'\1solver GAMG; smoother GaussSeidel;', s)
-if n != 1:
-    sys.exit(p + ': no PCG p_rgh to set to GAMG')
-open(p, 'w').write(s)
-PY
+tankGAMG "$d" || exit 1
 tankRun "$d"

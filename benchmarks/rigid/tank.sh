@@ -20,6 +20,21 @@ DICT
     sed -i 's/n (2 1 1)/n (1 2 1)/' "$d/system/decomposeParDict"
 }
 
+# tankGAMG DIR: GAMG for the pressure (the template's PCG takes hundreds of
+# iterations a step on a few hundred thousand cells)
+tankGAMG() {
+    python3 - "$1/system/fvSolution" <<'PY'
+import re, sys
+p = sys.argv[1]
+s = open(p).read()
+s, n = re.subn(r'(p_rgh\s*\{\s*)solver\s+PCG;\s*preconditioner\s+DIC;',
+              r'\1solver GAMG; smoother GaussSeidel;', s)
+if n != 1:
+    sys.exit(p + ': no PCG p_rgh to set to GAMG')
+open(p, 'w').write(s)
+PY
+}
+
 # tankRun DIR: set the fields and bodies, decompose, run on 2 ranks
 tankRun() {
     (cd "$1" && setFields > log.setFields 2>&1 && setBodies > log.setBodies 2>&1 \
