@@ -2,18 +2,21 @@
 """galilean.py FIXED MOVING [T0]: the drag coefficient Cd = 2 Fx/(rho U^2 D
 dz) of galilean.sh's two runs (U 1, D 0.1, rho 1; dz from the mesh) at a
 few times and its mean over t >= T0 (default 0.1), and the moving run's
-excess over the fixed one's."""
+excess over the fixed one's; with PIMPLE outer iterations, the force of
+each step's last."""
 import sys
 
 
 def forces(case):
-    rows = []
+    """(t, Fx) per step: the last row of each time (one a PIMPLE outer
+    iteration)"""
+    last = {}
     for line in open(case + '/postProcessing/fixedBodies/0/forces.dat'):
         if line.startswith('#') or not line.strip():
             continue
         c = line.split()
-        rows.append((float(c[0]), float(c[2])))
-    return rows
+        last[float(c[0])] = float(c[2])
+    return sorted(last.items())
 
 
 def depth(case):
