@@ -8,6 +8,7 @@
 # fluid's force on the cylinder is postProcessing/fixedBodies/0/
 # forces.dat (every step); cylinder.py reads it.
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/cylinderCase.sh"
 d=$1 n=$2 tend=${3:-10}
 nx=$((22*n)) ny=$(python3 -c "print(round(4.1*$n))")
 rm -rf "$d"; mkdir -p "$d/0" "$d/constant" "$d/system"
@@ -47,20 +48,7 @@ solvers
 }
 PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; }
 DICT
-cat > "$d/system/setBodiesDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
-bodies { cylinder { material cylinder; shape cylinder; centre (0.2 0.2 0); radius 0.05; axis (0 0 1); } }
-DICT
-cat > "$d/constant/vheProperties" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
-fluids { liquid { rho [1 -3 0 0 0 0 0] 1; nu [0 2 -1 0 0 0 0] 1e-3; } }
-solids { cylinder { rho [1 -3 0 0 0 0 0] 1; nu [0 2 -1 0 0 0 0] 1e-3;
-                    rigid yes; motion fixed; } }
-DICT
-cat > "$d/constant/g" <<DICT
-FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
-dimensions [0 1 -2 0 0 0 0]; value (0 0 0);
-DICT
+cylinderCase "$d" 0.2 0.2 1e-3 "motion fixed;"
 inflow=$(python3 -c "
 H = 0.41; n = $ny
 print(' '.join('(%.12g 0 0)' % (6*(j + 0.5)*H/n*(H - (j + 0.5)*H/n)/H**2) for j in range(n)))")

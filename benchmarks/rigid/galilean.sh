@@ -12,6 +12,7 @@
 # time.  postProcessing/fixedBodies/0/forces.dat (every step);
 # galilean.py compares two runs.
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/cylinderCase.sh"
 d=$1 n=$2 mode=$3 tend=${4:-0.4} Re=${5:-100}
 nu=$(python3 -c "print(0.1/$Re)")
 N=$((10*n))
@@ -57,20 +58,7 @@ solvers
 }
 PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
 DICT
-cat > "$d/system/setBodiesDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
-bodies { cylinder { material cylinder; shape cylinder; centre ($x0 0.5 0); radius 0.05; axis (0 0 1); } }
-DICT
-cat > "$d/constant/vheProperties" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
-fluids { liquid { rho [1 -3 0 0 0 0 0] 1; nu [0 2 -1 0 0 0 0] $nu; } }
-solids { cylinder { rho [1 -3 0 0 0 0 0] 1; nu [0 2 -1 0 0 0 0] $nu;
-                    rigid yes; $motion } }
-DICT
-cat > "$d/constant/g" <<DICT
-FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
-dimensions [0 1 -2 0 0 0 0]; value (0 0 0);
-DICT
+cylinderCase "$d" "$x0" 0.5 "$nu" "$motion"
 for f in U p_rgh; do
     case $f in
         U) cls=volVectorField dims="[0 1 -1 0 0 0 0]" v="uniform $U0" ;;
