@@ -3,15 +3,15 @@
 # decomposed in y for 2 ranks.
 . "$(dirname "${BASH_SOURCE[0]}")/../../tests/cases/lib.sh" 2>/dev/null
 
-# tankCase DIR W H NX NY RHO_BODY ENDTIME MAXDELTAT BODIES: the case in DIR,
-# the water 0.01 m above the top; BODIES is the setBodiesDict's bodies
-# entries
+# tankCase DIR W H NX NY RHO_BODY ENDTIME MAXDELTAT BODIES [NU]: the case
+# in DIR, the water 0.01 m above the top; BODIES is the setBodiesDict's
+# bodies entries, NU the water's viscosity (1e-6 by default)
 tankCase() {
-    local d=$1 W=$2 H=$3 nx=$4 ny=$5 rho=$6 tend=$7 dtmax=$8 bodies=$9
+    local d=$1 W=$2 H=$3 nx=$4 ny=$5 rho=$6 tend=$7 dtmax=$8 bodies=$9 nu=${10:-1e-6}
     rm -rf "$d"
     sceneCase floatingBodies "$d" W="$W" H="$H" nx="$nx" ny="$ny" \
         depthWater="$(python3 -c "print(round($H + 0.01, 9))")" rhoWater=1000 \
-        nuWater=1e-6 nuAir=1e-6 rhoWood="$rho" nuWood=1e-6 \
+        nuWater="$nu" nuAir="$nu" rhoWood="$rho" nuWood="$nu" \
         endTime="$tend" writeInterval=0.01 maxDeltaT="$dtmax" || return 1
     cat > "$d/system/setBodiesDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }

@@ -1,0 +1,69 @@
+#!/bin/bash
+# faxen.sh DIR CELLS_PER_D [ENDTIME]: Stokes drag on a disk moved along the
+# axis of a channel, against Faxen's (1946) result for a cylinder midway
+# between two plane walls: F/(mu U) = 4 pi/(ln(l/a) - 0.9157 +
+# 1.7244 (a/l)^2 - 1.7302 (a/l)^4 + ...), a the radius, l the distance to
+# either wall; 10.558 at l/a = 8 (the settling channel's W/d).  A rigid
+# cylinder (D = 0.1 m, motion prescribed) moved at U = 0.01 m/s along the
+# axis of a closed box 0.8 m wide and 1.2 m long (walls 6 D above and
+# below it) of liquid (rho 1, nu 1: Re 1e-3), fixed step 0.01 s (viscous
+# number 0.64 CELLS_PER_D^2) to ENDTIME (0.3 s by default, twice the
+# viscous time over the half width).  postProcessing/fixedBodies/0/
+# forces.dat; faxen.py reads it.
+. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/cylinderCase.sh"
+d=$1 n=$2 tend=${3:-0.3}
+nx=$((8*n)) ny=$((12*n))
+rm -rf "$d"; mkdir -p "$d/0" "$d/constant" "$d/system"
+cp "$VHE_ROOT/tutorials/periodicChannel/template/system/fvSchemes" "$d/system/"
+cat > "$d/system/blockMeshDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+dz #eval{ 0.1/$n };
+vertices ( (0 0 0) (0.8 0 0) (0.8 1.2 0) (0 1.2 0)
+           (0 0 \$dz) (0.8 0 \$dz) (0.8 1.2 \$dz) (0 1.2 \$dz) );
+blocks ( hex (0 1 2 3 4 5 6 7) ($nx $ny 1) simpleGrading (1 1 1) );
+boundary
+(
+    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
+);
+DICT
+cat > "$d/system/controlDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application vheFoam; libs (vheFoam);
+startFrom latestTime; startTime 0; stopAt endTime; endTime $tend;
+deltaT 0.01; writeControl adjustable; writeInterval 0.1; purgeWrite 0;
+writeFormat ascii; writePrecision 10; timePrecision 6;
+runTimeModifiable false; adjustTimeStep no; maxCo 1; maxAlphaCo 1; maxDeltaT 1;
+DICT
+cat > "$d/system/fvSolution" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
+solvers
+{
+    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
+    p_rgh { solver GAMG; smoother GaussSeidel; tolerance 1e-10; relTol 0.01; }
+    p_rghFinal { \$p_rgh; relTol 0; }
+    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-12; relTol 0; }
+    UFinal { \$U; }
+}
+PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
+DICT
+cylinderCase "$d" 0.4 0.6 1 "motion prescribed; velocity (0 -0.01 0);"
+for f in U p_rgh; do
+    case $f in
+        U) cls=volVectorField dims="[0 1 -1 0 0 0 0]" bc="noSlip" ;;
+        p_rgh) cls=volScalarField dims="[1 -1 -2 0 0 0 0]" bc="zeroGradient" ;;
+    esac
+    cat > "$d/0/$f" <<DICT
+FoamFile { version 2.0; format ascii; class $cls; object $f; }
+dimensions $dims;
+internalField uniform $( [ $f = U ] && echo "(0 0 0)" || echo 0 );
+boundaryField
+{
+    walls { type $bc; }
+    frontAndBack { type empty; }
+}
+DICT
+done
+(cd "$d" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || exit 1
+(cd "$d" && vheFoam > log.vheFoam 2>&1)
