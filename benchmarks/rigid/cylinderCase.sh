@@ -1,5 +1,6 @@
-# Sourced by cylinder.sh and galilean.sh: one rigid cylinder (D = 0.1 m,
-# axis z) in one liquid of rho 1, no gravity.
+# Sourced by cylinder.sh, galilean.sh, sliding.sh and faxen.sh: one rigid
+# cylinder (D = 0.1 m, axis z) in one liquid of rho 1, no gravity, in a
+# box of square cells.
 # cylinderCase DIR X Y NU MOTION: its setBodiesDict (centre (X Y 0)),
 # vheProperties (liquid and cylinder of viscosity NU; MOTION the rigid
 # material's motion entries, e.g. "motion fixed;") and g
@@ -19,4 +20,98 @@ DICT
 FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
 dimensions [0 1 -2 0 0 0 0]; value (0 0 0);
 DICT
+}
+
+# cylinderSetup DIR: an empty case with the periodic channel's fvSchemes
+cylinderSetup() {
+    rm -rf "$1"; mkdir -p "$1/0" "$1/constant" "$1/system"
+    cp "$VHE_ROOT/tutorials/periodicChannel/template/system/fvSchemes" "$1/system/"
+}
+
+# cylinderBox DIR LX LY NX NY DZ BOUNDARY: the blockMeshDict of the box
+# (0 0 0) to (LX LY DZ) in NX x NY x 1 cells.  BOUNDARY: its boundary's
+# entries, from the faces left (0 4 7 3), right (1 2 6 5), bottom
+# (0 1 5 4), top (3 7 6 2), front and back (0 3 2 1) (4 5 6 7)
+cylinderBox() {
+    cat > "$1/system/blockMeshDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+dz $6;
+vertices ( (0 0 0) ($2 0 0) ($2 $3 0) (0 $3 0)
+           (0 0 \$dz) ($2 0 \$dz) ($2 $3 \$dz) (0 $3 \$dz) );
+blocks ( hex (0 1 2 3 4 5 6 7) ($4 $5 1) simpleGrading (1 1 1) );
+boundary
+(
+$7
+);
+DICT
+}
+
+# cylinderControl DIR ENDTIME DELTAT WRITEINTERVAL ADJUST: the
+# controlDict; ADJUST yes: the step adjusted to Courant number 0.5 (at
+# most 0.01 s), else fixed at DELTAT
+cylinderControl() {
+    local adjust="adjustTimeStep no; maxCo 1; maxAlphaCo 1; maxDeltaT 1;"
+    [ "$5" = yes ] && adjust="adjustTimeStep yes; maxCo 0.5; maxAlphaCo 0.5;
+maxDeltaT 0.01;"
+    cat > "$1/system/controlDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application vheFoam; libs (vheFoam);
+startFrom latestTime; startTime 0; stopAt endTime; endTime $2;
+deltaT $3; writeControl adjustable; writeInterval $4; purgeWrite 0;
+writeFormat ascii; writePrecision 10; timePrecision 6;
+runTimeModifiable false; $adjust
+DICT
+}
+
+# cylinderSolution DIR PTOL UTOL [PIMPLE]: the fvSolution, GAMG for p_rgh
+# to PTOL, U to UTOL, one outer iteration; PIMPLE more PIMPLE entries
+cylinderSolution() {
+    cat > "$1/system/fvSolution" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
+solvers
+{
+    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
+    p_rgh { solver GAMG; smoother GaussSeidel; tolerance $2; relTol 0.01; }
+    p_rghFinal { \$p_rgh; relTol 0; }
+    U { solver PBiCGStab; preconditioner DILU; tolerance $3; relTol 0; }
+    UFinal { \$U; }
+}
+PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0;${4:+ $4} }
+DICT
+}
+
+# cylinderChannelFields DIR U0 INLET WALLS: U (internal U0, INLET the
+# inlet's value, WALLS the walls' condition) and p_rgh (0 at the outlet)
+# of a channel with patches inlet, outlet, walls and frontAndBack
+cylinderChannelFields() {
+    cat > "$1/0/U" <<DICT
+FoamFile { version 2.0; format ascii; class volVectorField; object U; }
+dimensions [0 1 -1 0 0 0 0];
+internalField uniform $2;
+boundaryField
+{
+    inlet  { type fixedValue; value $3; }
+    outlet { type zeroGradient; }
+    walls  { $4 }
+    frontAndBack { type empty; }
+}
+DICT
+    cat > "$1/0/p_rgh" <<DICT
+FoamFile { version 2.0; format ascii; class volScalarField; object p_rgh; }
+dimensions [1 -1 -2 0 0 0 0];
+internalField uniform 0;
+boundaryField
+{
+    inlet  { type zeroGradient; }
+    outlet { type fixedValue; value uniform 0; }
+    walls  { type zeroGradient; }
+    frontAndBack { type empty; }
+}
+DICT
+}
+
+# cylinderRun DIR: mesh, bodies, run
+cylinderRun() {
+    (cd "$1" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || return 1
+    (cd "$1" && vheFoam > log.vheFoam 2>&1)
 }

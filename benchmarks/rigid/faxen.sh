@@ -14,40 +14,11 @@
 . "$(dirname "$0")/cylinderCase.sh"
 d=$1 n=$2 tend=${3:-0.3}
 nx=$((8*n)) ny=$((12*n))
-rm -rf "$d"; mkdir -p "$d/0" "$d/constant" "$d/system"
-cp "$VHE_ROOT/tutorials/periodicChannel/template/system/fvSchemes" "$d/system/"
-cat > "$d/system/blockMeshDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
-dz #eval{ 0.1/$n };
-vertices ( (0 0 0) (0.8 0 0) (0.8 1.2 0) (0 1.2 0)
-           (0 0 \$dz) (0.8 0 \$dz) (0.8 1.2 \$dz) (0 1.2 \$dz) );
-blocks ( hex (0 1 2 3 4 5 6 7) ($nx $ny 1) simpleGrading (1 1 1) );
-boundary
-(
-    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
-    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
-);
-DICT
-cat > "$d/system/controlDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application vheFoam; libs (vheFoam);
-startFrom latestTime; startTime 0; stopAt endTime; endTime $tend;
-deltaT 0.01; writeControl adjustable; writeInterval 0.1; purgeWrite 0;
-writeFormat ascii; writePrecision 10; timePrecision 6;
-runTimeModifiable false; adjustTimeStep no; maxCo 1; maxAlphaCo 1; maxDeltaT 1;
-DICT
-cat > "$d/system/fvSolution" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
-solvers
-{
-    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
-    p_rgh { solver GAMG; smoother GaussSeidel; tolerance 1e-10; relTol 0.01; }
-    p_rghFinal { \$p_rgh; relTol 0; }
-    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-12; relTol 0; }
-    UFinal { \$U; }
-}
-PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
-DICT
+cylinderSetup "$d"
+cylinderBox "$d" 0.8 1.2 "$nx" "$ny" "#eval{ 0.1/$n }" "    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }"
+cylinderControl "$d" "$tend" 0.01 0.1 no
+cylinderSolution "$d" 1e-10 1e-12 "pRefCell 0; pRefValue 0;"
 cylinderCase "$d" 0.4 0.6 1 "motion prescribed; velocity (0 -0.01 0);"
 for f in U p_rgh; do
     case $f in
@@ -65,5 +36,4 @@ boundaryField
 }
 DICT
 done
-(cd "$d" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || exit 1
-(cd "$d" && vheFoam > log.vheFoam 2>&1)
+cylinderRun "$d"

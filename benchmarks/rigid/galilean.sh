@@ -21,43 +21,14 @@ case $mode in
     moving) U0="(0 0 0)" x0=0.6 motion="motion prescribed; velocity (-1 0 0);" ;;
     *) echo "MODE: fixed or moving" >&2; exit 1 ;;
 esac
-rm -rf "$d"; mkdir -p "$d/0" "$d/constant" "$d/system"
-cp "$VHE_ROOT/tutorials/periodicChannel/template/system/fvSchemes" "$d/system/"
-cat > "$d/system/blockMeshDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
-dz #eval{ 1.0/$N };
-vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0)
-           (0 0 \$dz) (1 0 \$dz) (1 1 \$dz) (0 1 \$dz) );
-blocks ( hex (0 1 2 3 4 5 6 7) ($N $N 1) simpleGrading (1 1 1) );
-boundary
-(
-    left   { type cyclic; neighbourPatch right; faces ((0 4 7 3)); }
+cylinderSetup "$d"
+cylinderBox "$d" 1 1 "$N" "$N" "#eval{ 1.0/$N }" "    left   { type cyclic; neighbourPatch right; faces ((0 4 7 3)); }
     right  { type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }
     bottom { type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }
     top    { type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }
-    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
-);
-DICT
-cat > "$d/system/controlDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application vheFoam; libs (vheFoam);
-startFrom latestTime; startTime 0; stopAt endTime; endTime $tend;
-deltaT 0.0025; writeControl adjustable; writeInterval 0.1; purgeWrite 0;
-writeFormat ascii; writePrecision 10; timePrecision 6;
-runTimeModifiable false; adjustTimeStep no; maxCo 1; maxAlphaCo 1; maxDeltaT 1;
-DICT
-cat > "$d/system/fvSolution" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
-solvers
-{
-    "alpha.*" { nAlphaSubCycles 1; cAlpha 1; }
-    p_rgh { solver GAMG; smoother GaussSeidel; tolerance 1e-9; relTol 0.01; }
-    p_rghFinal { \$p_rgh; relTol 0; }
-    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-10; relTol 0; }
-    UFinal { \$U; }
-}
-PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
-DICT
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }"
+cylinderControl "$d" "$tend" 0.0025 0.1 no
+cylinderSolution "$d" 1e-9 1e-10 "pRefCell 0; pRefValue 0;"
 cylinderCase "$d" "$x0" 0.5 "$nu" "$motion"
 for f in U p_rgh; do
     case $f in
@@ -75,5 +46,4 @@ boundaryField
 }
 DICT
 done
-(cd "$d" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || exit 1
-(cd "$d" && vheFoam > log.vheFoam 2>&1)
+cylinderRun "$d"
