@@ -80,19 +80,17 @@ PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0;${4:+ $4} }
 DICT
 }
 
-# cylinderChannelFields DIR U0 INLET WALLS: U (internal U0, INLET the
-# inlet's value, WALLS the walls' condition) and p_rgh (0 at the outlet)
-# of a channel with patches inlet, outlet, walls and frontAndBack
-cylinderChannelFields() {
+# cylinderFields DIR U0 UPATCHES PPATCHES: U (internal U0) and p_rgh
+# (internal 0), UPATCHES and PPATCHES their boundary entries (one per
+# line) before frontAndBack's empty one
+cylinderFields() {
     cat > "$1/0/U" <<DICT
 FoamFile { version 2.0; format ascii; class volVectorField; object U; }
 dimensions [0 1 -1 0 0 0 0];
 internalField uniform $2;
 boundaryField
 {
-    inlet  { type fixedValue; value $3; }
-    outlet { type zeroGradient; }
-    walls  { $4 }
+$3
     frontAndBack { type empty; }
 }
 DICT
@@ -102,12 +100,21 @@ dimensions [1 -1 -2 0 0 0 0];
 internalField uniform 0;
 boundaryField
 {
-    inlet  { type zeroGradient; }
-    outlet { type fixedValue; value uniform 0; }
-    walls  { type zeroGradient; }
+$4
     frontAndBack { type empty; }
 }
 DICT
+}
+
+# cylinderChannelFields DIR U0 INLET WALLS: the fields of a channel with
+# patches inlet (U fixed to INLET), outlet (p_rgh 0) and walls (U's
+# condition WALLS)
+cylinderChannelFields() {
+    cylinderFields "$1" "$2" "    inlet  { type fixedValue; value $3; }
+    outlet { type zeroGradient; }
+    walls  { $4 }" "    inlet  { type zeroGradient; }
+    outlet { type fixedValue; value uniform 0; }
+    walls  { type zeroGradient; }"
 }
 
 # cylinderRun DIR: mesh, bodies, run

@@ -20,20 +20,5 @@ cylinderBox "$d" 0.8 1.2 "$nx" "$ny" "#eval{ 0.1/$n }" "    walls { type wall; f
 cylinderControl "$d" "$tend" 0.01 0.1 no
 cylinderSolution "$d" 1e-10 1e-12 "pRefCell 0; pRefValue 0;"
 cylinderCase "$d" 0.4 0.6 1 "motion prescribed; velocity (0 -0.01 0);"
-for f in U p_rgh; do
-    case $f in
-        U) cls=volVectorField dims="[0 1 -1 0 0 0 0]" bc="noSlip" ;;
-        p_rgh) cls=volScalarField dims="[1 -1 -2 0 0 0 0]" bc="zeroGradient" ;;
-    esac
-    cat > "$d/0/$f" <<DICT
-FoamFile { version 2.0; format ascii; class $cls; object $f; }
-dimensions $dims;
-internalField uniform $( [ $f = U ] && echo "(0 0 0)" || echo 0 );
-boundaryField
-{
-    walls { type $bc; }
-    frontAndBack { type empty; }
-}
-DICT
-done
+cylinderFields "$d" "(0 0 0)" "    walls { type noSlip; }" "    walls { type zeroGradient; }"
 cylinderRun "$d"

@@ -30,20 +30,7 @@ cylinderBox "$d" 1 1 "$N" "$N" "#eval{ 1.0/$N }" "    left   { type cyclic; neig
 cylinderControl "$d" "$tend" 0.0025 0.1 no
 cylinderSolution "$d" 1e-9 1e-10 "pRefCell 0; pRefValue 0;"
 cylinderCase "$d" "$x0" 0.5 "$nu" "$motion"
-for f in U p_rgh; do
-    case $f in
-        U) cls=volVectorField dims="[0 1 -1 0 0 0 0]" v="uniform $U0" ;;
-        p_rgh) cls=volScalarField dims="[1 -1 -2 0 0 0 0]" v="uniform 0" ;;
-    esac
-    cat > "$d/0/$f" <<DICT
-FoamFile { version 2.0; format ascii; class $cls; object $f; }
-dimensions $dims;
-internalField $v;
-boundaryField
-{
-    "(left|right|bottom|top)" { type cyclic; }
-    frontAndBack { type empty; }
-}
-DICT
-done
+cylinderFields "$d" "$U0" \
+    '    "(left|right|bottom|top)" { type cyclic; }' \
+    '    "(left|right|bottom|top)" { type cyclic; }'
 cylinderRun "$d"
