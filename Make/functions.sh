@@ -2,7 +2,7 @@
 
 # Debian packages each stage needs.
 VHE_BUILD_PACKAGES="openfoam libopenfoam openmpi-bin libopenmpi-dev gcc g++ make
- pkg-config check dpkg-dev xz-utils bzip2 gmsh gnuplot-nox"
+ pkg-config check dpkg-dev xz-utils bzip2 gmsh gnuplot-nox libpetsc-real-dev"
 VHE_TEST_PACKAGES="python3"
 VHE_RUN_PACKAGES="gmsh gnuplot-nox python3 bsdextrautils bc"
 VHE_IMAGE_PACKAGES="paraview python3-paraview xvfb xauth"

@@ -38,6 +38,7 @@ Description
 #include "bodyContact.H"
 #include "surfaceTension.H"
 #include "stepCoupling.H"
+#include "coupledStep.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -102,9 +103,16 @@ int main(int argc, char *argv[])
                 {
                     #include "UEqn.H"
 
-                    while (pimple.correct())
+                    if (coupledSolve)
                     {
-                        #include "pEqn.H"
+                        #include "UpEqn.H"
+                    }
+                    else
+                    {
+                        while (pimple.correct())
+                        {
+                            #include "pEqn.H"
+                        }
                     }
 
                     #include "rigidProjection.H"
