@@ -6,15 +6,17 @@ first write where the disk that started below is the higher; -1: never)
 and the kissing time, the write of their smallest gap before it (contact
 keeps them about 1.5 cells apart, so the gap does not close).  With PNG,
 a gnuplot figure of both heights and the gap against time."""
-import subprocess, sys
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bodiesdat import bodies_rows  # noqa: E402
 
 d = sys.argv[1]
 dia = 2e-3
 rows = {}
-for line in open(d + '/postProcessing/bodies/0/bodies.dat'):
-    c = line.split()
-    if line.startswith('#') or not c:
-        continue
+for c in bodies_rows(d):
     rows.setdefault(float(c[0]), {})[int(c[1])] = (float(c[5]), float(c[6]))
 times = sorted(rows)
 ids = sorted(rows[times[0]], key=lambda i: rows[times[0]][i][1])[:2]

@@ -4,16 +4,17 @@ function object of a settling.sh case: prints, per write, t, the centre
 (x, y), the particle Reynolds number |U| d/nu and the Taylor deformation
 of the largest body, then the largest Reynolds number and when.
 """
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bodiesdat import bodies_rows  # noqa: E402
 
 d = sys.argv[1]
 nu = float(sys.argv[2]) if len(sys.argv) > 2 else 1e-6
 dia = float(sys.argv[3]) if len(sys.argv) > 3 else 2.5e-3
 rows = {}
-for line in open(d + '/postProcessing/bodies/0/bodies.dat'):
-    c = line.split()
-    if line.startswith('#') or not c:
-        continue
+for c in bodies_rows(d):
     t, vol = float(c[0]), float(c[4])
     if t not in rows or vol > rows[t][0]:
         rows[t] = (vol, float(c[5]), float(c[6]),
