@@ -20,7 +20,8 @@ void Foam::rigidBodies::solve
 (
     const fvVectorMatrix& UEqn,
     const volVectorField& rhs,
-    volVectorField& U
+    volVectorField& U,
+    const std::function<void(fvVectorMatrix&)>& coupledSolve
 ) const
 {
     const fvMesh& mesh = U.mesh();
@@ -159,8 +160,16 @@ void Foam::rigidBodies::solve
             }
         }
         UR.primitiveFieldRef() = rigidField(Ub, omega);
-        fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U) == rhs + Cp*UR);
-        UEqnHeld.solve(solverDict);
+        if (coupledSolve)
+        {
+            fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U) == Cp*UR);
+            coupledSolve(UEqnHeld);
+        }
+        else
+        {
+            fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U) == rhs + Cp*UR);
+            UEqnHeld.solve(solverDict);
+        }
 
         // The penalty's net force and torque on each body
         const vectorField fc
