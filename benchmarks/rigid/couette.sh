@@ -5,7 +5,8 @@
 # "none" or a shear modulus G.  The viscous number Vn = mu dt/(rho dx^2)
 # is set with a fixed step dt = min(dx/2, Vn dx^2) (Courant number 1/2 at
 # most) and mu = Vn dx^2/dt (1 Pa s up to Vn = 1/(2 dx)).  The case is
-# left in DIR for couette.py.
+# left in DIR for couette.py.  VHE_PIMPLE in the environment adds its
+# entries to PIMPLE (e.g. VHE_PIMPLE="coupling { solve always; }").
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
 d=$1 n=$2 body=$3 vn=$4 tend=${5:-0.5}
 dt=$(python3 -c "print(min(0.5/$n, $vn/$n**2))")
@@ -26,4 +27,5 @@ fi
 couetteWalls "$d" "$n" || exit 1
 fixedStep "$d" "$dt" || exit 1
 [ "$nd" = 1 ] && { (cd "$d" && setBodies > log.setBodies 2>&1) || exit 1; }
+[ -n "${VHE_PIMPLE:-}" ] && sed -i "s/^    pRefValue .*/&\n    $VHE_PIMPLE/" "$d/system/fvSolution"
 (cd "$d" && vheFoam > log.vheFoam 2>&1)

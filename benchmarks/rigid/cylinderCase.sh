@@ -64,7 +64,8 @@ DICT
 }
 
 # cylinderSolution DIR PTOL UTOL [PIMPLE]: the fvSolution, GAMG for p_rgh
-# to PTOL, U to UTOL, one outer iteration; PIMPLE more PIMPLE entries
+# to PTOL, U to UTOL, one outer iteration; PIMPLE more PIMPLE entries, and
+# those of VHE_PIMPLE in the environment (VHE_PIMPLE="coupling { solve always; }")
 cylinderSolution() {
     cat > "$1/system/fvSolution" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
@@ -76,7 +77,7 @@ solvers
     U { solver PBiCGStab; preconditioner DILU; tolerance $3; relTol 0; }
     UFinal { \$U; }
 }
-PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0;${4:+ $4} }
+PIMPLE { nOuterCorrectors 1; nNonOrthogonalCorrectors 0;${4:+ $4}${VHE_PIMPLE:+ $VHE_PIMPLE} }
 DICT
 }
 

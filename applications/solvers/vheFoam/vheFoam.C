@@ -99,24 +99,30 @@ int main(int argc, char *argv[])
             {
                 contact.correct();
                 #include "startCoupling.H"
-                do
+                for (label attempt = 0; attempt < 2; ++attempt)
                 {
-                    #include "UEqn.H"
+                    do
+                    {
+                        #include "UEqn.H"
 
-                    if (coupledSolve)
-                    {
-                        #include "UpEqn.H"
-                    }
-                    else
-                    {
-                        while (pimple.correct())
+                        if (coupledSolve)
                         {
-                            #include "pEqn.H"
+                            #include "UpEqn.H"
                         }
-                    }
+                        else
+                        {
+                            while (pimple.correct())
+                            {
+                                #include "pEqn.H"
+                            }
+                        }
 
-                    #include "rigidProjection.H"
-                } while (coupling.loop(U, accelerationFlux, acceleration));
+                        #include "rigidProjection.H"
+                    } while (coupling.loop(U, accelerationFlux, acceleration));
+
+                    if (!coupledSolve || coupling.converged()) break;
+                    #include "coupledFallback.H"
+                }
             }
 
             #include "BStretch.H"
