@@ -11,7 +11,9 @@ Description
     upper-convected equation, elastic stress Ghat phi_s^(1/2) dev(B*) in the
     momentum equation, and an incremental pressure-correction projection
     of the predicted velocity with the coefficient dt/rho (p_rgh and its
-    boundary conditions as interFoam), stable at any viscous number.
+    boundary conditions as interFoam), stable at any viscous number; the
+    steps with stiff bodies iterated to their coupled solution, each pass
+    momentum and continuity in one PETSc matrix (coupledStep).
     The mesh may be refined and unrefined at run time (dynamicRefineFvMesh,
     constant/dynamicMeshDict) near every interface between phases.
     A case with one fluid and no solid is plain incompressible flow: the
