@@ -750,6 +750,55 @@ double vhe_bound_downwind(long nCells, long nInt, const int *own,
                           double dt, const unsigned char *check, int above,
                           int below, double tol, int nSweeps);
 
+/* ---- A cell cut by an isosurface (cut.c) ---------------------------------
+ *
+ * A polyhedral cell: npoints points x (3 per point), nfaces faces, face k's
+ * points (indices into the cell's points) face_pts[face_start[k] ..
+ * face_start[k+1]), listed with the right-hand normal out of the cell
+ * unless flip[k] (OpenFOAM: the cell is the face's neighbour); x0 a point
+ * inside (the cell centre: the volume sums' origin).
+ */
+struct vhe_cell {
+    int npoints;
+    const double *x;
+    int nfaces;
+    const int *face_start;
+    const int *face_pts;
+    const unsigned char *flip;
+    double x0[3];
+};
+
+/* The part of a cell where the point field f > iso (f linear along the
+ * edges): status 0 cut, 1 none of the cell, -1 all of it; its volume [m^3]
+ * (vhe_cell_cut_fraction: its fraction of the cell); the cut's area vector,
+ * out of the part, and its centre. */
+struct vhe_cut {
+    int status;
+    double iso;
+    double volume;
+    double area[3];
+    double centre[3];
+};
+
+/* vhe_cell_cut: the part where f > iso.  Returns 0, or -1 for a face of
+ *   more than 32 points. */
+int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
+                 struct vhe_cut *out);
+
+/* vhe_cell_cut_fraction: the iso value whose part holds the fraction alpha
+ *   of the cell (volume V), to tol in the fraction.  A field of unknown
+ *   form (g <= 0): the bracketing pair of point values by bisection, then
+ *   the cubic the fraction is on it, checked on the cell
+ *   (isoCutCell::vofCutCell's method, without its allocations).  A linear
+ *   field whose gradient has magnitude g (a plane): Newton from guess
+ *   (ignored outside the point values), the fraction's derivative being
+ *   -|cut area|/(g V), kept in its bracket.  out->volume is the fraction
+ *   reached.  Returns 0, 1 when tol was not reached, -1 for a cell the cut
+ *   cannot handle. */
+int vhe_cell_cut_fraction(const struct vhe_cell *cell, const double *f,
+                          double V, double alpha, double tol, double g,
+                          double guess, struct vhe_cut *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "interfacePlanes.H"
-#include "isoCutCell.H"
+#include "vhe.h"
 #include "volPointInterpolation.H"
 #include "syncTools.H"
 #include "globalIndex.H"
@@ -347,6 +347,64 @@ void Foam::interfacePlanes::coupledPoints
 }
 
 
+bool Foam::interfacePlanes::cutCell
+(
+    const label c,
+    const scalar alpha,
+    const scalar tol,
+    const scalar g,
+    const scalar guess,
+    vhe_cut& out
+) const
+{
+    // The cell for the C core: its points, and its faces in local point
+    // indices, flipped where the cell is the face's neighbour
+    const labelList& cp = mesh_.cellPoints()[c];
+    const pointField& pts = mesh_.points();
+    x_.setSize(3*cp.size());
+    forAll(cp, i)
+    {
+        const point& p = pts[cp[i]];
+        x_[3*i] = p.x();
+        x_[3*i + 1] = p.y();
+        x_[3*i + 2] = p.z();
+    }
+    const cell& faces = mesh_.cells()[c];
+    start_.setSize(faces.size() + 1);
+    flip_.setSize(faces.size());
+    facePts_.clear();
+    forAll(faces, k)
+    {
+        const label f = faces[k];
+        start_[k] = facePts_.size();
+        flip_[k] = mesh_.faceOwner()[f] != c;
+        for (const label p : mesh_.faces()[f])
+        {
+            facePts_.append(cp.find(p));
+        }
+    }
+    start_[faces.size()] = facePts_.size();
+
+    vhe_cell cellC;
+    cellC.npoints = cp.size();
+    cellC.x = x_.cdata();
+    cellC.nfaces = faces.size();
+    cellC.face_start = start_.cdata();
+    cellC.face_pts = facePts_.cdata();
+    cellC.flip = flip_.cdata();
+    const point& C = mesh_.C()[c];
+    cellC.x0[0] = C.x();
+    cellC.x0[1] = C.y();
+    cellC.x0[2] = C.z();
+    return
+        vhe_cell_cut_fraction
+        (
+            &cellC, fCell_.cdata(), mesh_.V()[c], alpha, tol, g, guess, &out
+        ) == 0
+     && out.status == 0;
+}
+
+
 void Foam::interfacePlanes::cutPlanes
 (
     const scalarField& a,
@@ -355,16 +413,30 @@ void Foam::interfacePlanes::cutPlanes
 )
 {
     addProfiling(plic, "interfacePlanes::plic");
-    isoCutCell cut(mesh_, pointValues_);
+    const pointField& pts = mesh_.points();
+    vhe_cut out;
     forAll(cells_, i)
     {
         const label c = cells_[i];
-        writePlane(c, n[i]);
-        if (cut.vofCutCell(c, a[c], isoTol, 100) != 0) continue;
-        if ((cut.isoFaceArea() & n[i]) <= 0) continue;
+        const labelList& cp = mesh_.cellPoints()[c];
+        const point& C = mesh_.C()[c];
+        fCell_.setSize(cp.size());
+        forAll(cp, j)
+        {
+            fCell_[j] = -(n[i] & (pts[cp[j]] - C));
+        }
+        // from the last plane's centre (Newton: the field is a plane)
+        if (!cutCell(c, a[c], isoTol, 1, -(n[i] & (centre_[i] - C)), out))
+        {
+            continue;
+        }
+        if ((vector(out.area[0], out.area[1], out.area[2]) & n[i]) <= 0)
+        {
+            continue;
+        }
         normal_[i] = n[i];
-        centre_[i] = cut.isoFaceCentre();
-        isoValue_[i] = cut.isoValue();
+        centre_[i] = point(out.centre[0], out.centre[1], out.centre[2]);
+        isoValue_[i] = out.iso;
         planar_[i] = true;
     }
 }
@@ -398,17 +470,23 @@ Foam::interfacePlanes::interfacePlanes
         );
         interpolated_ = ap.primitiveField();
         pointValues_ = interpolated_;
-        isoCutCell cut(mesh_, pointValues_);
+        vhe_cut out;
         forAll(a, c)
         {
             if (a[c] <= surfTol || a[c] >= 1 - surfTol) continue;
-            if (cut.vofCutCell(c, a[c], isoTol, 100) != 0) continue;
-            const vector A = cut.isoFaceArea();
+            const labelList& cp = mesh_.cellPoints()[c];
+            fCell_.setSize(cp.size());
+            forAll(cp, j)
+            {
+                fCell_[j] = interpolated_[cp[j]];
+            }
+            if (!cutCell(c, a[c], isoTol, 0, 0, out)) continue;
+            const vector A(out.area[0], out.area[1], out.area[2]);
             if (mag(A) < VSMALL) continue;
             cells_.append(c);
             normal_.append(A/mag(A));
-            centre_.append(cut.isoFaceCentre());
-            isoValue_.append(cut.isoValue());
+            centre_.append(point(out.centre[0], out.centre[1], out.centre[2]));
+            isoValue_.append(out.iso);
             planar_.append(false);
         }
     }

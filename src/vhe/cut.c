@@ -1,0 +1,329 @@
+/*
+ * cut.c -- a polyhedral cell cut by an isosurface of a point field that is
+ * linear along the edges (a plane when the field is linear): the part
+ * where f > iso, its volume, and the area vector and centre of the cut.
+ * vhe_cell_cut_fraction finds the iso value at which that part holds a
+ * given fraction of the cell (PLIC: the plane of a given normal that cuts a
+ * cell at its volume fraction; isoAdvector's isosurface cut).
+ *
+ * The part's volume is (1/3) sum over its boundary of (c - x0).S: the
+ * submerged parts of the cell's faces (each a fan of triangles about its
+ * mean point) and the cut itself, whose area vector closes the surface
+ * (minus the sum of the others) and whose centre is the area-weighted
+ * centre of the fan of the cut's edge segments about their mean point
+ * (isoCutCell's construction; exact for a plane).  No allocation.
+ */
+#include "vhe.h"
+
+#include <math.h>
+#include <string.h>
+
+static void sub3(const double a[3], const double b[3], double r[3])
+{
+    r[0] = a[0] - b[0];
+    r[1] = a[1] - b[1];
+    r[2] = a[2] - b[2];
+}
+
+static void cross3(const double a[3], const double b[3], double r[3])
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Largest polygon handled (points of a face plus its cuts) and cut
+ * segments of a cell */
+#define VHE_CUT_MAXP 64
+#define VHE_CUT_MAXSEG 64
+
+int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
+                 struct vhe_cut *out)
+{
+    double S_sub[3] = {0.0, 0.0, 0.0};  /* submerged faces' area vector */
+    double vol3 = 0.0;                  /* 3 x volume, about x0 */
+    double seg[VHE_CUT_MAXSEG][2][3];   /* the cut's edge segments */
+    int nseg = 0, nsub = 0, k;
+    const double *x0 = cell->x0;
+
+    memset(out, 0, sizeof *out);
+    out->iso = iso;
+    for (k = 0; k < cell->nfaces; ++k) {
+        const int s = cell->face_start[k], n = cell->face_start[k + 1] - s;
+        double poly[VHE_CUT_MAXP][3], mean[3] = {0.0, 0.0, 0.0};
+        int np = 0, ncut = 0, nin = 0, i, j;
+        double cuts[VHE_CUT_MAXP][3];
+
+        if (n > VHE_CUT_MAXP / 2) {
+            return -1;
+        }
+        for (i = 0; i < n; ++i) {
+            /* the face's points in outward order */
+            const int a = cell->face_pts[s + (cell->flip[k] ? n - 1 - i : i)];
+            const int b = cell->face_pts[s + (cell->flip[k] ? (2 * n - 2 - i) % n
+                                                            : (i + 1) % n)];
+            const double fa = f[a] - iso, fb = f[b] - iso;
+            if (fa > 0.0) {
+                memcpy(poly[np++], &cell->x[3 * a], 3 * sizeof(double));
+                ++nin;
+            }
+            if ((fa > 0.0) != (fb > 0.0)) {
+                const double t = fa / (fa - fb);
+                for (j = 0; j < 3; ++j) {
+                    poly[np][j] = cell->x[3 * a + j]
+                                + t * (cell->x[3 * b + j] - cell->x[3 * a + j]);
+                }
+                memcpy(cuts[ncut++], poly[np], 3 * sizeof(double));
+                ++np;
+            }
+        }
+        if (nin == 0) {
+            continue;
+        }
+        ++nsub;
+        /* the submerged part's fan about its mean point */
+        for (i = 0; i < np; ++i) {
+            for (j = 0; j < 3; ++j) {
+                mean[j] += poly[i][j] / np;
+            }
+        }
+        for (i = 0; i < np; ++i) {
+            double e1[3], e2[3], St[3], ct[3];
+            sub3(poly[i], mean, e1);
+            sub3(poly[(i + 1) % np], mean, e2);
+            cross3(e1, e2, St);
+            for (j = 0; j < 3; ++j) {
+                St[j] *= 0.5;
+                ct[j] = (poly[i][j] + poly[(i + 1) % np][j] + mean[j]) / 3.0
+                      - x0[j];
+                S_sub[j] += St[j];
+            }
+            vol3 += dot3(ct, St);
+        }
+        /* its cut points pair up into the cut's edge segments: from where
+         * the walk leaves the submerged part to where it comes back (the
+         * walk starts at the face's first point, inside or not) */
+        {
+            const int first = cell->face_pts[s + (cell->flip[k] ? n - 1 : 0)];
+            const int shift = f[first] - iso > 0.0 ? 0 : 1;
+            for (i = 0; i + 1 < ncut; i += 2) {
+                if (nseg == VHE_CUT_MAXSEG) {
+                    return -1;
+                }
+                memcpy(seg[nseg][0], cuts[(i + shift) % ncut], 3 * sizeof(double));
+                memcpy(seg[nseg][1], cuts[(i + 1 + shift) % ncut],
+                       3 * sizeof(double));
+                ++nseg;
+            }
+        }
+    }
+
+    if (nsub == 0) {
+        out->status = 1;                 /* all above: nothing where f > iso */
+        return 0;
+    }
+    out->area[0] = -S_sub[0];
+    out->area[1] = -S_sub[1];
+    out->area[2] = -S_sub[2];
+    if (nseg == 0 || dot3(out->area, out->area) <= 0.0) {
+        out->status = -1;                /* no cut: all of the cell */
+        out->volume = vol3 / 3.0;
+        return 0;
+    }
+
+    /* the cut's centre: its segments' fan about their mean point, each
+     * triangle's area signed along the cut's area vector */
+    {
+        double mean[3] = {0.0, 0.0, 0.0}, sumA = 0.0, sumAc[3] = {0.0, 0.0, 0.0};
+        double nhat[3], ciso[3];
+        const double m = sqrt(dot3(out->area, out->area));
+        int i, j;
+        for (i = 0; i < nseg; ++i) {
+            for (j = 0; j < 3; ++j) {
+                mean[j] += (seg[i][0][j] + seg[i][1][j]) / (2.0 * nseg);
+            }
+        }
+        for (j = 0; j < 3; ++j) {
+            nhat[j] = out->area[j] / m;
+        }
+        for (i = 0; i < nseg; ++i) {
+            double e1[3], e2[3], n[3], a;
+            sub3(seg[i][0], mean, e1);
+            sub3(seg[i][1], mean, e2);
+            cross3(e1, e2, n);
+            a = fabs(dot3(n, nhat));
+            sumA += a;
+            for (j = 0; j < 3; ++j) {
+                sumAc[j] += a * (seg[i][0][j] + seg[i][1][j] + mean[j]) / 3.0;
+            }
+        }
+        for (j = 0; j < 3; ++j) {
+            out->centre[j] = sumA > 0.0 ? sumAc[j] / sumA : mean[j];
+            ciso[j] = out->centre[j] - x0[j];
+        }
+        vol3 += dot3(ciso, out->area);
+    }
+    out->status = 0;
+    out->volume = vol3 / 3.0;
+    return 0;
+}
+
+/* The fraction of the cell where f > iso */
+static double fraction(const struct vhe_cell *cell, const double *f,
+                       double iso, double V, struct vhe_cut *out)
+{
+    vhe_cell_cut(cell, f, iso, out);
+    return out->status == -1 ? 1.0 : out->status == 1 ? 0.0 : out->volume / V;
+}
+
+/* Newton on the iso value of a linear f whose gradient has magnitude g:
+ * d(fraction)/d(iso) = -|cut area|/(g V); kept inside the bracket [lo, hi]
+ * of the point values (bisection where a step leaves it) */
+static int newton(const struct vhe_cell *cell, const double *f, double V,
+                  double alpha, double tol, double g, double x,
+                  struct vhe_cut *out)
+{
+    double lo = f[0], hi = f[0];
+    int i, it;
+    for (i = 1; i < cell->npoints; ++i) {
+        lo = f[i] < lo ? f[i] : lo;
+        hi = f[i] > hi ? f[i] : hi;
+    }
+    if (!(x > lo && x < hi)) {
+        x = lo + (1.0 - alpha) * (hi - lo);
+    }
+    for (it = 0; it < 60; ++it) {
+        const double r = fraction(cell, f, x, V, out) - alpha;
+        const double A = sqrt(dot3(out->area, out->area));
+        double xn;
+        if (fabs(r) <= tol) {
+            out->volume = r + alpha;
+            return 0;
+        }
+        if (r > 0.0) {
+            lo = x;                     /* too much: the iso value rises */
+        } else {
+            hi = x;
+        }
+        xn = A > 0.0 ? x + r * g * V / A : 0.5 * (lo + hi);
+        x = xn > lo && xn < hi ? xn : 0.5 * (lo + hi);
+    }
+    return 1;
+}
+
+int vhe_cell_cut_fraction(const struct vhe_cell *cell, const double *f,
+                          double V, double alpha, double tol, double g,
+                          double guess, struct vhe_cut *out)
+{
+    double fs[VHE_CUT_MAXP], lo, hi, alo, ahi;
+    int n = cell->npoints, i, j, L, H, it;
+
+    if (n > VHE_CUT_MAXP || n < 4 || !(V > 0.0)) {
+        return -1;
+    }
+    if (g > 0.0) {
+        return newton(cell, f, V, alpha, tol, g, guess, out);
+    }
+    /* the point values sorted (insertion: a handful of points) */
+    for (i = 0; i < n; ++i) {
+        const double v = f[i];
+        for (j = i; j > 0 && fs[j - 1] > v; --j) {
+            fs[j] = fs[j - 1];
+        }
+        fs[j] = v;
+    }
+    /* fraction where f > iso falls from 1 at fs[0] to 0 at fs[n-1]: the
+     * pair of neighbouring point values that brackets alpha */
+    L = 0; H = n - 1; alo = 1.0; ahi = 0.0;
+    while (H - L > 1) {
+        const int M = (L + H) / 2;
+        double a;
+        vhe_cell_cut(cell, f, fs[M], out);
+        a = out->status == -1 ? 1.0 : out->volume / V;
+        if (a > alpha) {
+            L = M; alo = a;
+        } else if (a < alpha) {
+            H = M; ahi = a;
+        } else {
+            out->volume /= V;
+            return 0;
+        }
+    }
+    lo = fs[L]; hi = fs[H];
+    if (hi - lo <= 0.0) {
+        vhe_cell_cut(cell, f, lo, out);
+        out->volume /= V;
+        return 0;
+    }
+
+    /* on [lo, hi] the fraction is a cubic in iso (exact for a plane):
+     * through four values, then Newton from the secant's root */
+    {
+        double t[4] = {0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0}, a[4], c[4], x, r;
+        a[0] = alo; a[3] = ahi;
+        for (i = 1; i <= 2; ++i) {
+            vhe_cell_cut(cell, f, lo + t[i] * (hi - lo), out);
+            a[i] = out->status == -1 ? 1.0
+                 : out->status == 1 ? 0.0 : out->volume / V;
+        }
+        /* Newton form of the interpolating cubic */
+        c[0] = a[0];
+        c[1] = (a[1] - a[0]) / (t[1] - t[0]);
+        c[2] = ((a[2] - a[1]) / (t[2] - t[1]) - c[1]) / (t[2] - t[0]);
+        c[3] = (((a[3] - a[2]) / (t[3] - t[2])
+                 - (a[2] - a[1]) / (t[2] - t[1])) / (t[3] - t[1])
+                - c[2]) / (t[3] - t[0]);
+        x = (a[0] - alpha) / (a[0] - a[3]);
+        for (it = 0; it < 50; ++it) {
+            const double p = c[0] + (x - t[0]) * (c[1] + (x - t[1])
+                           * (c[2] + (x - t[2]) * c[3]));
+            const double dp = c[1] + c[2] * ((x - t[0]) + (x - t[1]))
+                            + c[3] * ((x - t[1]) * (x - t[2])
+                                      + (x - t[0]) * (x - t[2])
+                                      + (x - t[0]) * (x - t[1]));
+            double step;
+            r = p - alpha;
+            if (fabs(r) <= 0.01 * tol || dp == 0.0) {
+                break;
+            }
+            step = r / dp;
+            x -= step;
+            x = x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x);
+            if (fabs(step) < 1e-15) {
+                break;
+            }
+        }
+        /* checked on the cell itself; regula falsi (Illinois) if not */
+        {
+            double xa = 0.0, xb = 1.0, ra = a[0] - alpha, rb = a[3] - alpha;
+            int side = 0;
+            for (it = 0; it < 100; ++it) {
+                double frac;
+                vhe_cell_cut(cell, f, lo + x * (hi - lo), out);
+                frac = out->status == -1 ? 1.0
+                     : out->status == 1 ? 0.0 : out->volume / V;
+                r = frac - alpha;
+                if (fabs(r) <= tol) {
+                    out->volume = frac;
+                    return 0;
+                }
+                if ((r > 0.0) == (ra > 0.0)) {
+                    xa = x; ra = r;
+                    if (side == -1) rb *= 0.5;
+                    side = -1;
+                } else {
+                    xb = x; rb = r;
+                    if (side == 1) ra *= 0.5;
+                    side = 1;
+                }
+                x = (xa * rb - xb * ra) / (rb - ra);
+            }
+        }
+    }
+    return 1;
+}
