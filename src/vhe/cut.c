@@ -130,11 +130,19 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
     out->area[0] = -S_sub[0];
     out->area[1] = -S_sub[1];
     out->area[2] = -S_sub[2];
-    if (nseg == 0 || dot3(out->area, out->area) <= 0.0) {
+    if (nseg == 0) {
         out->status = -1;                /* no cut: all of the cell */
         out->volume = vol3 / 3.0;
         return 0;
     }
+    /* A cut of no area (the iso value at a point, or within round-off of
+     * one) is still a cut: the part's volume says how much of the cell it
+     * holds (nearly none or nearly all).  Taking it for all of the cell
+     * sent the search for a small fraction to the wrong pair of point
+     * values when the two largest differed by round-off, and the cell lost
+     * its cut (a disk's edge cell at 0.025 in test_rigid's obstacle case,
+     * serial; not on 2 ranks, whose point values differed in the last
+     * digit). */
 
     /* the cut's centre: its segments' fan about their mean point, each
      * triangle's area signed along the cut's area vector */
@@ -149,7 +157,7 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
             }
         }
         for (j = 0; j < 3; ++j) {
-            nhat[j] = out->area[j] / m;
+            nhat[j] = m > 0.0 ? out->area[j] / m : 0.0;
         }
         for (i = 0; i < nseg; ++i) {
             double e1[3], e2[3], n[3], a;

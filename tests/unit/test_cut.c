@@ -146,6 +146,46 @@ START_TEST(test_cut_fraction)
 }
 END_TEST
 
+/* A cut through a point (or within round-off of one) holds nearly none of
+   the cell, not all of it; and a small fraction is found when the two
+   largest point values differ in the last digit (the values of a disk's
+   edge cell in test_rigid's obstacle case, where the search once took the
+   cut at the top pair for the whole cell and failed) */
+START_TEST(test_cut_degenerate)
+{
+    struct vhe_cell c = cube(0.0);
+    struct vhe_cut out;
+    const double diag[3] = {1, 1, 1};
+    double f[8] = {0.1813229861, 0.55654390999999981, 0.0063313725000000015,
+                   0.13241650499999996, 0.1813229861, 0.55654391000000003,
+                   0.006331372499999998, 0.13241650499999999};
+    double g[8];
+    plane(diag, g);
+    vhe_cell_cut(&c, g, 3.0 - 1e-15, &out);
+    ck_assert(out.status != -1);
+    ck_assert(out.volume < 1e-12);
+    vhe_cell_cut(&c, f, 0.55654390999999981, &out);
+    ck_assert(out.status != -1);
+    ck_assert(out.volume < 1e-12);
+    /* that cell itself: 5e-4 x 5e-4 x 0.0125 m at (0.00875, 0.03175) */
+    {
+        double Y[24];
+        int p;
+        for (p = 0; p < 8; ++p) {
+            Y[3 * p] = 0.0085 + 5e-4 * (p & 1);
+            Y[3 * p + 1] = 0.0315 + 5e-4 * ((p >> 1) & 1);
+            Y[3 * p + 2] = 0.0125 * ((p >> 2) & 1);
+        }
+        c.x = Y;
+        c.x0[0] = 0.00875; c.x0[1] = 0.03175; c.x0[2] = 0.00625;
+        ck_assert_int_eq(vhe_cell_cut_fraction(&c, f, 3.125e-9, 0.02532549,
+                                               1e-8, 0.0, 0.0, &out), 0);
+        ck_assert_int_eq(out.status, 0);
+        ck_assert_double_eq_tol(out.volume, 0.02532549, 1e-8);
+    }
+}
+END_TEST
+
 Suite *cut_suite(void)
 {
     Suite *s = suite_create("cut");
@@ -153,6 +193,7 @@ Suite *cut_suite(void)
     tcase_add_test(tc, test_cut_known);
     tcase_add_test(tc, test_cut_sheared);
     tcase_add_test(tc, test_cut_fraction);
+    tcase_add_test(tc, test_cut_degenerate);
     suite_add_tcase(s, tc);
     return s;
 }
