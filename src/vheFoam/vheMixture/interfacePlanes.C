@@ -5,62 +5,8 @@
 #include "interfacePlanes.H"
 #include "vhe.h"
 #include "volPointInterpolation.H"
-#include "syncTools.H"
-#include "globalIndex.H"
-#include "coupledPolyPatch.H"
+#include "pointStencil.H"
 #include "profiling.H"
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-// Per point, a flat list of records of `width` scalars, the first the
-// record's global cell id; merging keeps one record per id (a cell's record
-// reaches a point from each of the point's ranks and cyclic sides)
-struct uniqueRecords
-{
-    label width;
-
-    void operator()(List<scalar>& x, const List<scalar>& y) const
-    {
-        for (label j = 0; j < y.size(); j += width)
-        {
-            bool known = false;
-            for (label i = 0; i < x.size() && !known; i += width)
-            {
-                known = x[i] == y[j];
-            }
-            if (known) continue;
-            const label n = x.size();
-            x.setSize(n + width);
-            for (label k = 0; k < width; ++k) x[n + k] = y[j + k];
-        }
-    }
-};
-
-// The records hold no direction that a translation changes (positions are
-// relative to the point), and rotational cyclics are refused
-struct noTransform
-{
-    template<class Type>
-    void operator()(const vectorTensorTransform&, const bool, List<Type>&)
-    const
-    {}
-
-    template<class Type>
-    void operator()(const coupledPolyPatch&, UList<Type>&) const
-    {}
-
-    template<class Type, template<class> class Container>
-    void operator()(const coupledPolyPatch&, Container<Type>&) const
-    {}
-};
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -76,56 +22,6 @@ void Foam::interfacePlanes::writePlane(const label c, const vector& n) const
 }
 
 
-template<class Local, class Record>
-void Foam::interfacePlanes::visitStencil
-(
-    const label c,
-    const labelUList& coupledIndex,
-    const List<List<scalar>>& records,
-    const label width,
-    labelList& stamp,
-    DynamicList<scalar>& remoteSeen,
-    const Local& local,
-    const Record& record
-) const
-{
-    const globalIndex& ids = cellIds_;
-    remoteSeen.clear();
-    stamp[c] = c;
-    for (const label q : mesh_.cellPoints()[c])
-    {
-        const label j = coupledIndex[q];
-        if (j < 0)
-        {
-            for (const label k : mesh_.pointCells()[q])
-            {
-                if (stamp[k] == c) continue;
-                stamp[k] = c;
-                local(k);
-            }
-            continue;
-        }
-        const List<scalar>& rl = records[j];
-        for (label r = 0; r < rl.size(); r += width)
-        {
-            const label id = label(rl[r]);
-            if (ids.isLocal(id))
-            {
-                const label k = ids.toLocal(id);
-                if (stamp[k] == c) continue;
-                stamp[k] = c;
-            }
-            else
-            {
-                if (remoteSeen.found(rl[r])) continue;
-                remoteSeen.append(rl[r]);
-            }
-            record(&rl[r], q);
-        }
-    }
-}
-
-
 void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
 {
     const label nCells = mesh_.nCells();
@@ -133,41 +29,30 @@ void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
     const pointField& pts = mesh_.points();
     const labelListList& cellPoints = mesh_.cellPoints();
     const labelListList& pointCells = mesh_.pointCells();
+    const pointStencil stencil(mesh_);
 
-    // The points on processor and cyclic patches: there the cells around
-    // a point are exchanged as records of the global cell id and data
-    // relative to the point (frame-free); elsewhere they are read directly
-    labelList coupledIndex;
-    DynamicList<label> coupledPts;
-    coupledPoints(coupledIndex, coupledPts);
     labelList surfIndex(nCells, -1);
     forAll(cells_, i) surfIndex[cells_[i]] = i;
 
-    // The planes around the coupled points: id, normal, centre - point
-    List<List<scalar>> planes(coupledPts.size());
-    const uniqueRecords planeOp{7};
-    forAll(coupledPts, j)
-    {
-        const label q = coupledPts[j];
-        for (const label k : pointCells[q])
-        {
-            const label i = surfIndex[k];
-            if (i < 0) continue;
-            const vector r = centre_[i] - pts[q];
-            planeOp
-            (
-                planes[j],
-                List<scalar>
-                ({
-                    scalar(cellIds_.toGlobal(k)), normal_[i].x(),
-                    normal_[i].y(), normal_[i].z(), r.x(), r.y(), r.z()
-                })
-            );
-        }
-    }
-    syncTools::syncPointList
+    // The planes around the coupled points: normal, centre - point
+    const pointStencil::records planes
     (
-        mesh_, coupledPts, planes, planeOp, List<scalar>(), noTransform()
+        stencil.gather
+        (
+            7,
+            [&](const label k, const label q, scalar* d)
+            {
+                const label i = surfIndex[k];
+                if (i < 0) return false;
+                const vector r = centre_[i] - pts[q];
+                for (direction j = 0; j < 3; ++j)
+                {
+                    d[j] = normal_[i][j];
+                    d[3 + j] = r[j];
+                }
+                return true;
+            }
+        )
     );
 
     // The cells that need the RDF: those sharing a point with a surface
@@ -180,11 +65,7 @@ void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
             for (const label k : pointCells[q]) band[k] = true;
         }
     }
-    forAll(coupledPts, j)
-    {
-        if (planes[j].empty()) continue;
-        for (const label k : pointCells[coupledPts[j]]) band[k] = true;
-    }
+    stencil.markAround(planes, band);
 
     // The RDF: a surface cell's own distance to its plane; in the others,
     // the mean of the distances of the planes sharing a point with the
@@ -192,8 +73,6 @@ void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
     // from the plane's centre
     scalarField rdf(nCells, Zero);
     List<bool> has(nCells, false);
-    labelList stamp(nCells, -1);
-    DynamicList<scalar> remoteSeen;
     forAll(band, c)
     {
         if (!band[c]) continue;
@@ -213,9 +92,9 @@ void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
             num += w*d;
             den += w;
         };
-        visitStencil
+        stencil.visit
         (
-            c, coupledIndex, planes, 7, stamp, remoteSeen,
+            c, planes, 7,
             [&](const label k)
             {
                 const label i = surfIndex[k];
@@ -237,112 +116,12 @@ void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
         }
     }
 
-    stencilGradient(rdf, has, coupledIndex, coupledPts, nNew);
+    // The normal: the RDF's least-squares gradient
+    stencil.gradient(rdf, has, cells_, nNew);
     forAll(nNew, i)
     {
         const scalar m = mag(nNew[i]);
         nNew[i] = m > SMALL ? nNew[i]/m : normal_[i];
-    }
-}
-
-
-void Foam::interfacePlanes::stencilGradient
-(
-    const scalarField& f,
-    const UList<bool>& has,
-    const labelUList& coupledIndex,
-    const labelUList& coupledPts,
-    List<vector>& g
-) const
-{
-    const label nCells = mesh_.nCells();
-    const volVectorField& C = mesh_.C();
-    const pointField& pts = mesh_.points();
-    const labelListList& pointCells = mesh_.pointCells();
-
-    // f around the coupled points: id, value, cell centre - point
-    List<List<scalar>> recs(coupledPts.size());
-    const uniqueRecords op{5};
-    forAll(coupledPts, j)
-    {
-        const label q = coupledPts[j];
-        for (const label k : pointCells[q])
-        {
-            if (!has[k]) continue;
-            const vector r = C[k] - pts[q];
-            op
-            (
-                recs[j],
-                List<scalar>
-                ({scalar(cellIds_.toGlobal(k)), f[k], r.x(), r.y(), r.z()})
-            );
-        }
-    }
-    syncTools::syncPointList
-    (
-        mesh_, coupledPts, recs, op, List<scalar>(), noTransform()
-    );
-
-    // The least-squares gradient over the cells that share a point with
-    // the surface cell, weighted by 1/distance^2; an empty direction gets
-    // a unit diagonal (its gradient 0)
-    symmTensor empty(Zero);
-    const Vector<label>& sD = mesh_.solutionD();
-    if (sD.x() < 0) empty.xx() = 1;
-    if (sD.y() < 0) empty.yy() = 1;
-    if (sD.z() < 0) empty.zz() = 1;
-
-    labelList stamp(nCells, -1);
-    DynamicList<scalar> remoteSeen;
-    g.setSize(cells_.size());
-    forAll(cells_, i)
-    {
-        const label c = cells_[i];
-        g[i] = Zero;
-        symmTensor G(empty);
-        vector b(Zero);
-        auto add = [&](const vector& d, const scalar value)
-        {
-            const scalar w = 1/magSqr(d);
-            G += w*sqr(d);
-            b += w*d*(value - f[c]);
-        };
-        visitStencil
-        (
-            c, coupledIndex, recs, 5, stamp, remoteSeen,
-            [&](const label k)
-            {
-                if (has[k]) add(C[k] - C[c], f[k]);
-            },
-            [&](const scalar* r, const label q)
-            {
-                add(vector(r[2], r[3], r[4]) - (C[c] - pts[q]), r[1]);
-            }
-        );
-        if (mag(det(G)) < SMALL) continue;
-        g[i] = inv(G) & b;
-    }
-}
-
-
-void Foam::interfacePlanes::coupledPoints
-(
-    labelList& coupledIndex,
-    DynamicList<label>& coupledPts
-) const
-{
-    coupledIndex.setSize(mesh_.nPoints());
-    coupledIndex = -1;
-    coupledPts.clear();
-    for (const polyPatch& pp : mesh_.boundaryMesh())
-    {
-        if (!pp.coupled()) continue;
-        for (const label p : pp.meshPoints())
-        {
-            if (coupledIndex[p] >= 0) continue;
-            coupledIndex[p] = coupledPts.size();
-            coupledPts.append(p);
-        }
     }
 }
 
@@ -454,7 +233,6 @@ Foam::interfacePlanes::interfacePlanes
 )
 :
     mesh_(alpha.mesh()),
-    cellIds_(mesh_.nCells()),
     pointValues_(pointValues)
 {
     const scalarField& a = alpha.primitiveField();
@@ -492,20 +270,6 @@ Foam::interfacePlanes::interfacePlanes
     }
 
     // 2-4. RDF normals and the planes that cut the cells at their fractions
-    if (nRDF > 0)
-    {
-        for (const polyPatch& pp : mesh_.boundaryMesh())
-        {
-            const coupledPolyPatch* cpp = isA<coupledPolyPatch>(pp);
-            if (cpp && cpp->size() && !cpp->parallel())
-            {
-                FatalErrorInFunction
-                    << "Patch " << pp.name() << " is a rotational cyclic: "
-                    << "the solids' interface normals are not rotated "
-                    << "across one" << exit(FatalError);
-            }
-        }
-    }
     List<vector> n;
     for (label pass = 0; pass < nRDF; ++pass)
     {
