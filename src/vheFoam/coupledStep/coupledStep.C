@@ -69,7 +69,7 @@ Foam::coupledStep::~coupledStep()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::coupledStep::start(label nb)
+void Foam::coupledStep::start()
 {
     if (started_) return;
     if (options_.empty())
@@ -129,7 +129,7 @@ void Foam::coupledStep::solve
     const label nd = cmpts.size();
     const label nb = nd + 1;
 
-    start(nb);
+    start();
 
     const globalIndex cellsG(nC);
     const label start0 = cellsG.offset(Pstream::myProcNo());
@@ -220,7 +220,8 @@ void Foam::coupledStep::solve
             "MatCreateAIJ"
         );
         MatSetOption(A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE);
-        // nb unknowns a cell, interleaved: field splits by block
+        // nb unknowns a cell, interleaved (a field split takes them with
+        // -pc_fieldsplit_block_size nb)
     }
     Vec b, x;
     check(MatCreateVecs(A, &x, &b), "MatCreateVecs");

@@ -10,14 +10,20 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
-void Foam::interfacePlanes::writePlane(const label c, const vector& n) const
+void Foam::interfacePlanes::planeValues
+(
+    const label c,
+    const vector& n,
+    UList<scalar>& f
+) const
 {
     // Rises into the fraction, as the interpolated fraction does
     const point& C = mesh_.C()[c];
     const pointField& pts = mesh_.points();
-    for (const label p : mesh_.cellPoints()[c])
+    const labelList& cp = mesh_.cellPoints()[c];
+    forAll(cp, j)
     {
-        pointValues_[p] = -(n & (pts[p] - C));
+        f[j] = -(n & (pts[cp[j]] - C));
     }
 }
 
@@ -29,7 +35,7 @@ void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
     const pointField& pts = mesh_.points();
     const labelListList& cellPoints = mesh_.cellPoints();
     const labelListList& pointCells = mesh_.pointCells();
-    const pointStencil stencil(mesh_);
+    const pointStencil& stencil = pointStencil::New(mesh_);
 
     labelList surfIndex(nCells, -1);
     forAll(cells_, i) surfIndex[cells_[i]] = i;
@@ -192,18 +198,13 @@ void Foam::interfacePlanes::cutPlanes
 )
 {
     addProfiling(plic, "interfacePlanes::plic");
-    const pointField& pts = mesh_.points();
     vhe_cut out;
     forAll(cells_, i)
     {
         const label c = cells_[i];
-        const labelList& cp = mesh_.cellPoints()[c];
         const point& C = mesh_.C()[c];
-        fCell_.setSize(cp.size());
-        forAll(cp, j)
-        {
-            fCell_[j] = -(n[i] & (pts[cp[j]] - C));
-        }
+        fCell_.setSize(mesh_.cellPoints()[c].size());
+        planeValues(c, n[i], fCell_);
         // from the last plane's centre (Newton: the field is a plane)
         if (!cutCell(c, a[c], isoTol, 1, -(n[i] & (centre_[i] - C)), out))
         {
@@ -246,7 +247,7 @@ Foam::interfacePlanes::interfacePlanes
         (
             volPointInterpolation::New(mesh_).interpolate(alpha)
         );
-        interpolated_ = ap.primitiveField();
+        interpolated_.transfer(ap.primitiveFieldRef());
         pointValues_ = interpolated_;
         vhe_cut out;
         forAll(a, c)
@@ -287,12 +288,18 @@ Foam::interfacePlanes::interfacePlanes
 void Foam::interfacePlanes::setPointValues(const label i) const
 {
     const label c = cells_[i];
+    const labelList& cp = mesh_.cellPoints()[c];
     if (planar_[i])
     {
-        writePlane(c, normal_[i]);
+        fCell_.setSize(cp.size());
+        planeValues(c, normal_[i], fCell_);
+        forAll(cp, j)
+        {
+            pointValues_[cp[j]] = fCell_[j];
+        }
         return;
     }
-    for (const label p : mesh_.cellPoints()[c])
+    for (const label p : cp)
     {
         pointValues_[p] = interpolated_[p];
     }

@@ -5,10 +5,19 @@
 #include "pointStencil.H"
 #include "volFields.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(pointStencil, 0);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::pointStencil::pointStencil(const fvMesh& mesh)
 :
+    MeshObject<fvMesh, TopologicalMeshObject, pointStencil>(mesh),
     mesh_(mesh),
     cellIds_(mesh.nCells()),
     coupledIndex_(mesh.nPoints(), -1),
