@@ -78,17 +78,38 @@ void Foam::coupledStepPETSc::start()
 {
     if (options_.empty())
     {
-        // A direct LU (MUMPS, on any number of ranks): the coupled fixed
-        // point needs the continuity rows solved exactly.  FGMRES with a
-        // Schur-complement field split (hypre on both blocks, the
-        // velocity components of a cell field 0, its p_rgh field 1: the
-        // user guide's options) takes 4 iterations in scene A's channel
-        // and 7 to 15 for the cavity's disk with the LU's answer, but its
-        // tolerance, relative to the whole right-hand side, leaves the
-        // Couette stiff disk's iteration at 17 passes a step instead of
-        // 12 and its rotation at 0.92 of the flow's instead of 0.97
-        options_ =
-            "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps";
+        // The coupled fixed point needs the continuity rows solved to
+        // round-off.  In 2D a direct LU (MUMPS, any number of ranks): its
+        // fill grows as N log N.  In 3D it grows as N^(4/3) and its work
+        // as N^2: scene B's four spheres (16,800 cells) took 18.7 s a
+        // step, so there FGMRES with a Schur-complement field split
+        // (the velocity components of a cell field 0, its p_rgh field
+        // 1, hypre's BoomerAMG on both, the Schur complement from the
+        // velocity block's diagonal) to a relative tolerance of 1e-12:
+        // 0.95 s a step (the projection 0.065).  Its tolerance is
+        // relative to the whole right-hand side; at 1e-8 the Couette
+        // stiff disk turned at 0.984 of the flow's rate with D 0.015 and
+        // 33 passes a step, at 1e-12 as with the LU (0.9638, 12.6
+        // passes; the LU 0.9638, 11.7)
+        const label nd = mesh_.nSolutionD();
+        if (nd < 3)
+        {
+            options_ =
+                "-ksp_type preonly -pc_type lu"
+                " -pc_factor_mat_solver_type mumps";
+        }
+        else
+        {
+            options_ =
+                "-ksp_type fgmres -ksp_rtol 1e-12 -ksp_max_it 1000"
+                " -pc_type fieldsplit -pc_fieldsplit_block_size 4"
+                " -pc_fieldsplit_0_fields 0,1,2 -pc_fieldsplit_1_fields 3"
+                " -pc_fieldsplit_type schur"
+                " -pc_fieldsplit_schur_fact_type full"
+                " -pc_fieldsplit_schur_precondition selfp"
+                " -fieldsplit_0_ksp_type preonly -fieldsplit_0_pc_type hypre"
+                " -fieldsplit_1_ksp_type preonly -fieldsplit_1_pc_type hypre";
+        }
     }
     PetscBool initialised = PETSC_FALSE;
     PetscInitialized(&initialised);
