@@ -7,7 +7,8 @@
 vhe_build_if_missing()
 {
     [ -x "$FOAM_USER_APPBIN/vheFoam" ] && [ -x "$FOAM_USER_APPBIN/setBodies" ] \
-        && [ -f "$FOAM_USER_LIBBIN/libvheFoam.so" ] && return 0
+        && [ -f "$FOAM_USER_LIBBIN/libvheFoam.so" ] \
+        && [ -f "$FOAM_USER_LIBBIN/libvheCoupled.so" ] && return 0
     "$VHE_ROOT/Allwmake"
 }
 
