@@ -14,8 +14,12 @@ namespace Foam
     defineRunTimeSelectionTable(coupledSolver, mesh);
 }
 
-const Foam::word Foam::coupledStep::libName("libvheCoupled.so");
-const Foam::word Foam::coupledStep::solverType("PETSc");
+namespace
+{
+    // The library and the solver's type in its table
+    const Foam::word libName("libvheCoupled.so");
+    const Foam::word solverType("PETSc");
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -49,18 +53,7 @@ Foam::coupledStep::coupledStep
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::coupledStep::solve
-(
-    const fvVectorMatrix& UEqn,
-    const volScalarField& rho,
-    const surfaceScalarField& faceForces,
-    volVectorField& U,
-    volScalarField& p_rgh,
-    surfaceScalarField& phi,
-    surfaceScalarField& accelerationFlux,
-    volVectorField& acceleration,
-    label pRefCell
-)
+Foam::coupledSolver& Foam::coupledStep::solver()
 {
     if (!solver_.valid())
     {
@@ -83,11 +76,7 @@ void Foam::coupledStep::solve
         }
         solver_ = (*table)[solverType](mesh_, options_);
     }
-    solver_->solve
-    (
-        UEqn, rho, faceForces, U, p_rgh, phi, accelerationFlux,
-        acceleration, pRefCell
-    );
+    return *solver_;
 }
 
 
