@@ -40,29 +40,19 @@ figure() { python3 "$TESTS_DIR/floating.py" "$@"; }
 
 exact=$(python3 -c "print((500 - 1)/(1000 - 1)*0.1)")
 draft=$(figure draft "$WORK/archimedes" 0.1 2)
-# A stiff elastic box floats high, the more so the stiffer it is and the
-# coarser the mesh: G/rho_s 10, 0.57 % of its height at 40 cells (0.23
-# of a cell), 0.26 % at 80 (the test's box with nx, ny set).  Its stress
-# lives at the cell centres inside it (vhe_body_weight); when every cell
-# of its edge carried G phi_s, the edge's stress increment, a viscosity
-# dt Ghat phi_s, tied the water beside it to it and the sides' edge cells
-# kept the water's slide as a strain: 0.94 % and 2.3 % high.  A rigid box
-# floats at the Archimedes draft within 0.1 % of its height (test_rigid).
-# Target 0.5 % (issue 24)
+# A stiff elastic box floats high, the more so the stiffer it is (G/rho_s
+# 10: 1.0 % of its height, 0.04 cell; 2.1 % with MULES's diffuse edge): the projection's
+# splitting strains it each step, and a strain of 1e-3 at its edge, where
+# air, water and body meet, is a stress of G/1000, a tenth of the
+# buoyancy's at G/rho_s = 100.  A rigid box floats at the Archimedes
+# draft within 0.1 % of its height (test_rigid): rigid is the choice for
+# a floating object.  Target 0.5 % (issue 24)
 checkKnown archimedesDraft "abs($draft - $exact) < 0.005*0.1" "abs($draft - $exact) < 0.03*0.1" \
     "draft $draft m, Archimedes $exact m (height 0.1 m)" \
-    "first order in the cell: 0.26 % of the height at 80 cells, docs/limitations.md"
+    "not settled by t = 3, and its sides' edge cells keep the water's shear: 2.3 % high at 80 cells, docs/limitations.md"
 
-# Air just above the water line beside the stiff box's top corners moves
-# at 0.114 m/s at 40 cells.  The edge cells' stress increment, a viscosity
-# dt Ghat phi_s, tied that air to the box (0.023 m/s) until the body's
-# stress moved to the cell centres inside it; the air is driven by the
-# body cells' cell-centred elastic force in the face fluxes between light
-# and heavy cells (docs/limitations.md)
 air=$(figure airSpeed "$WORK/stiff" 3)
-checkKnown stiffBodyQuietAir "$air < 0.1" "$air < 0.2" \
-    "largest air speed $air m/s around a box of G/rho_s = 100" \
-    "the elastic force cell-centred at body/gas faces, docs/limitations.md"
+check stiffBodyQuietAir "$air < 0.1" "largest air speed $air m/s around a box of G/rho_s = 100"
 
 read -r bottom0 bottom1 maxUp <<< "$(figure sink "$WORK/sinking" 0.1)"
 check heavyBodySinks "$bottom0 > 0.29 and $bottom1 < 0.075 and $maxUp <= 0" \
