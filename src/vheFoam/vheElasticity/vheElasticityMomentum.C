@@ -17,36 +17,20 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
     scalar deltaT
 ) const
 {
-    // The stress increment's viscosity where the body's stress lives
-    // (vhe_body_weight): none in the cells whose centre lies a quarter of
-    // a cell or more outside its outline, as their stress is none.  Their
-    // faces with the body's cells keep half of it (the linear face value),
-    // as their face stress keeps half of the body's.
-    tmp<volScalarField> tmu
+    // The stress increment's viscosity where the body's stress lives: none
+    // in its edge cells (phi_s < VHE_BODY_EDGE, vhe.h), whose stress is
+    // zero.  Their faces with the body's cells keep half of it (the linear
+    // face value), as their face stress keeps half of the body's.
+    return tmp<volScalarField>
     (
         new volScalarField
         (
             "muElastic",
             dimensionedScalar("deltaT", dimTime, stressStep(deltaT))
            *mixture_.Ghat()*mixture_.phis()
+           *pos0(mixture_.phis() - dimensionedScalar("edge", dimless, VHE_BODY_EDGE))
         )
     );
-    volScalarField& mu = tmu.ref();
-    const volScalarField& phis = mixture_.phis();
-    forAll(mu, c)
-    {
-        mu[c] *= vhe_body_weight(phis[c]);
-    }
-    forAll(mu.boundaryField(), patchi)
-    {
-        scalarField& mp = mu.boundaryFieldRef()[patchi];
-        const scalarField& pp = phis.boundaryField()[patchi];
-        forAll(mp, i)
-        {
-            mp[i] *= vhe_body_weight(pp[i]);
-        }
-    }
-    return tmu;
 }
 
 
