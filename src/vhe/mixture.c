@@ -86,7 +86,7 @@ void vhe_elastic_stress(size_t n, const double *Ghat, const double *phis,
         double *S = sigma + 6 * c;
         double f, tr3;
 
-        if (!(phis[c] > phis_min) || phis[c] < VHE_BODY_EDGE) {
+        if (!(phis[c] > phis_min)) {
             S[0] = S[1] = S[2] = S[3] = S[4] = S[5] = 0.0;
             continue;
         }

@@ -54,20 +54,8 @@ void vhe_mixture(size_t n, int nphase, const double *const *alpha,
 /* ----------------------------------------------------------- elastic stress */
 
 /*
- * A body's elastic stress lives at the cell centres inside it: a cell with
- * phi_s below this (its centre outside the body's outline, the isovalue
- * 1/2 of phi_s) is a fluid cell holding a sliver of the body, and carries
- * no elastic stress.  Stressed in proportion to phi_s, such a cell tied
- * the fluid beside the body to it (its stress increment is a viscosity
- * dt Ghat phi_s, rigid for a stiff body at any phi_s): a stiff body was
- * half a cell larger than it is (a stiff disk's wall stress in plane
- * Couette flow 1.139 against a rigid disk's 1.057 at 32 cells).
- */
-#define VHE_BODY_EDGE 0.5
-
-/*
  * sigma[c] = Ghat phi_s^(1/2) dev(B*)   [Pa], symmTensor layout (6 per cell).
- * Zero where phis <= phis_min or phis < VHE_BODY_EDGE.  dev(A) = A - tr(A)/3 I.
+ * Zero where phis <= phis_min.  dev(A) = A - tr(A)/3 I.
  */
 void vhe_elastic_stress(size_t n, const double *Ghat, const double *phis,
                         const double *Bstar, double phis_min, double *sigma);

@@ -17,10 +17,6 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
     scalar deltaT
 ) const
 {
-    // The stress increment's viscosity where the body's stress lives: none
-    // in its edge cells (phi_s < VHE_BODY_EDGE, vhe.h), whose stress is
-    // zero.  Their faces with the body's cells keep half of it (the linear
-    // face value), as their face stress keeps half of the body's.
     return tmp<volScalarField>
     (
         new volScalarField
@@ -28,7 +24,6 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
             "muElastic",
             dimensionedScalar("deltaT", dimTime, stressStep(deltaT))
            *mixture_.Ghat()*mixture_.phis()
-           *pos0(mixture_.phis() - dimensionedScalar("edge", dimless, VHE_BODY_EDGE))
         )
     );
 }

@@ -7,7 +7,6 @@
 #include "fvc.H"
 #include "vhe.h"
 #include "vheFlat.H"
-#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -87,95 +86,6 @@ Foam::tmp<Foam::tensorField> Foam::vheElasticity::solidVelocityGradient
 }
 
 
-void Foam::vheElasticity::bodyEdgeGradient
-(
-    const labelUList& cells,
-    tensorField& g
-) const
-{
-    // A cell of a body's edge that is mostly fluid (phi_s < VHE_BODY_EDGE,
-    // its centre outside the outline) carries no elastic stress
-    // (vhe_elastic_stress), but keeps B* for when the body moves over its
-    // centre.  Its velocity gradient is the fluid's shear, which the body's
-    // material in it does not feel (no-slip puts the shear in the fluid
-    // beside the body): stretched by it, the material recorded the fluid's
-    // slide past the body as a strain that never relaxes, G phi_s times the
-    // slide over the cell, a spring that held a floating elastic box 2.3 %
-    // of its height high at 80 cells (B_xy ~ 1 in its sides' edge cells).
-    // So there the material takes the strain rate of the body's cells
-    // beside it, weighted by their phi_s (the solid extrapolated into its
-    // edge, as the reference map technique does; Kamrin, Rycroft and Nave
-    // 2012).  Cells without such a neighbour (a body thinner than a cell)
-    // keep their own.
-    const scalar edge = VHE_BODY_EDGE;
-    const scalarField& phis = mixture_.phis().primitiveField();
-    labelList index(mesh_.nCells(), -1);
-    forAll(cells, i)
-    {
-        index[cells[i]] = i;
-    }
-    tensorField sum(cells.size(), Zero);
-    scalarField wsum(cells.size(), Zero);
-    const auto take = [&](label i, scalar w, const tensor& t)
-    {
-        sum[i] += w*t;
-        wsum[i] += w;
-    };
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    forAll(own, f)
-    {
-        const label o = index[own[f]], n = index[nei[f]];
-        if (o < 0 || n < 0) continue;
-        const scalar po = phis[own[f]], pn = phis[nei[f]];
-        if (po < edge && pn >= edge) take(o, pn, g[n]);
-        if (pn < edge && po >= edge) take(n, po, g[o]);
-    }
-
-    // Across coupled patches: the other side's phi_s and gradient
-    const label nInt = mesh_.nInternalFaces();
-    scalarField bPhis(mesh_.nBoundaryFaces(), -1);
-    tensorField bG(mesh_.nBoundaryFaces(), Zero);
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    forAll(pbm, patchi)
-    {
-        if (!pbm[patchi].coupled()) continue;
-        const labelUList& fc = pbm[patchi].faceCells();
-        const label b0 = pbm[patchi].start() - nInt;
-        forAll(fc, j)
-        {
-            const label i = index[fc[j]];
-            if (i >= 0)
-            {
-                bPhis[b0 + j] = phis[fc[j]];
-                bG[b0 + j] = g[i];
-            }
-        }
-    }
-    syncTools::swapBoundaryFaceList(mesh_, bPhis);
-    syncTools::swapBoundaryFaceList(mesh_, bG);
-    forAll(pbm, patchi)
-    {
-        if (!pbm[patchi].coupled()) continue;
-        const labelUList& fc = pbm[patchi].faceCells();
-        const label b0 = pbm[patchi].start() - nInt;
-        forAll(fc, j)
-        {
-            const label i = index[fc[j]];
-            if (i >= 0 && phis[fc[j]] < edge && bPhis[b0 + j] >= edge)
-            {
-                take(i, bPhis[b0 + j], bG[b0 + j]);
-            }
-        }
-    }
-
-    forAll(g, i)
-    {
-        if (wsum[i] > 0) g[i] = sum[i]/wsum[i];
-    }
-}
-
-
 void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
 {
     // The flow is incompressible, but the cell gradient of U (interpolated
@@ -196,7 +106,6 @@ void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
         }
         tensorField gradU(solidVelocityGradient(U, cells));
         gradU = dev(gradU);
-        bodyEdgeGradient(cells, gradU);
         symmTensorField Bs(Bstar_.primitiveField(), cells);
         vhe_stretch(cells.size(), deltaT, flat(gradU), flat(Bs));
         symmTensorField& B = Bstar_.primitiveFieldRef();
