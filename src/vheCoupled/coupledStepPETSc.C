@@ -11,6 +11,7 @@
 #include "fixedFluxPressureFvPatchScalarField.H"
 #include "calculatedFvPatchFields.H"
 #include "linear.H"
+#include "implicitTranspose.H"
 
 #include <petscksp.h>
 
@@ -26,6 +27,99 @@ void check(PetscErrorCode ierr, const char* what)
         FatalErrorInFunction
             << "PETSc error " << ierr << " in " << what
             << Foam::exit(Foam::FatalError);
+    }
+}
+
+
+// The transpose part div(muT dev2(T(grad U))) in the momentum rows: its
+// internal-face part (implicitTranspose) in the matrix A, moved to the left
+// (the equation has -div), and in b the whole explicit term at the current
+// U less that part there
+void addTranspose
+(
+    const Foam::fvMesh& mesh,
+    const Foam::volScalarField& muT,
+    const Foam::volVectorField& U,
+    const Foam::labelList& cmpts,
+    const Foam::label start0,
+    Mat A,
+    Vec b
+)
+{
+    using namespace Foam;
+    const label nC = mesh.nCells();
+    const label nd = cmpts.size();
+    const label nb = nd + 1;
+
+    // Each row cell's column cells and 3 x 3 blocks (j, i)
+    List<DynamicList<label>> cols(nC);
+    List<DynamicList<tensor>> blocks(nC);
+    implicitTranspose::coefficients
+    (
+        mesh, muT.primitiveField(),
+        [&](label P, direction j, label c, direction i, scalar v)
+        {
+            DynamicList<label>& cp = cols[P];
+            label k = cp.find(c);
+            if (k < 0)
+            {
+                k = cp.size();
+                cp.append(c);
+                blocks[P].append(tensor::zero);
+            }
+            blocks[P][k][3*j + i] += v;
+        }
+    );
+
+    // The whole explicit term, integrated over each cell
+    const vectorField whole
+    (
+        mesh.V()
+       *fvc::div
+        (
+            muT*dev2(T(fvc::grad(U))), "div((mu*dev2(T(grad(U)))))"
+        )().primitiveField()
+    );
+
+    List<PetscInt> rows(nd), colIdx;
+    List<PetscScalar> vals;
+    for (label P = 0; P < nC; ++P)
+    {
+        const label n = cols[P].size();
+        vector part(Zero);
+        colIdx.setSize(n*nd);
+        vals.setSize(nd*n*nd);
+        for (label k = 0; k < nd; ++k)
+        {
+            rows[k] = PetscInt((start0 + P)*nb + k);
+        }
+        for (label m = 0; m < n; ++m)
+        {
+            const label c = cols[P][m];
+            const tensor& B = blocks[P][m];
+            part += B & U[c];
+            for (label l = 0; l < nd; ++l)
+            {
+                colIdx[m*nd + l] = PetscInt((start0 + c)*nb + l);
+                for (label k = 0; k < nd; ++k)
+                {
+                    vals[k*n*nd + m*nd + l] = -B[3*cmpts[k] + cmpts[l]];
+                }
+            }
+        }
+        if (n)
+        {
+            MatSetValues
+            (
+                A, nd, rows.cdata(), n*nd, colIdx.cdata(), vals.cdata(),
+                ADD_VALUES
+            );
+        }
+        for (label k = 0; k < nd; ++k)
+        {
+            PetscScalar r = whole[P][cmpts[k]] - part[cmpts[k]];
+            VecSetValues(b, 1, &rows[k], &r, ADD_VALUES);
+        }
     }
 }
 
@@ -137,7 +231,8 @@ void Foam::coupledStepPETSc::solve
     surfaceScalarField& phi,
     surfaceScalarField& accelerationFlux,
     volVectorField& acceleration,
-    label pRefCell
+    label pRefCell,
+    const volScalarField* muT
 )
 {
     const label nC = mesh_.nCells();
@@ -224,7 +319,9 @@ void Foam::coupledStepPETSc::solve
         {
             for (label k = 0; k < nb; ++k)
             {
-                nnz[i*nb + k] = nb*(cells[i].size() + 1);
+                // face neighbours; with the transpose part, theirs too
+                const label nF = cells[i].size();
+                nnz[i*nb + k] = nb*(muT ? 1 + nF + nF*nF : nF + 1);
             }
         }
         List<PetscInt> dnz(nLocal), onz(nLocal);
@@ -320,6 +417,14 @@ void Foam::coupledStepPETSc::solve
             add(row(own[f], k), row(nei[f], k), upper[f]);
             add(row(nei[f], k), row(own[f], k), lower[f]);
         }
+    }
+
+    // The viscous stress's transpose part: its internal-face part in the
+    // matrix, the rest (boundary and coupled faces) explicit, as the
+    // difference between the whole term and that part at the current U
+    if (muT)
+    {
+        addTranspose(mesh_, *muT, U, cmpts, start0, A, b);
     }
 
     // A face's terms in the rows of cell X (owner O, neighbour N): the
