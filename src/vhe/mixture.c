@@ -76,6 +76,12 @@ void vhe_mixture(size_t n, int nphase, const double *const *alpha,
     }
 }
 
+double vhe_body_weight(double phis)
+{
+    const double w = (phis - 0.25) / 0.5;   /* 0 at 1/4, 1 at 3/4 */
+    return w < 0.0 ? 0.0 : (w > 1.0 ? 1.0 : w);
+}
+
 void vhe_elastic_stress(size_t n, const double *Ghat, const double *phis,
                         const double *Bstar, double phis_min, double *sigma)
 {
@@ -90,8 +96,8 @@ void vhe_elastic_stress(size_t n, const double *Ghat, const double *phis,
             S[0] = S[1] = S[2] = S[3] = S[4] = S[5] = 0.0;
             continue;
         }
-        /* Ghat phi_s^(1/2) [Pa] times the dimensionless dev(B*). */
-        f = Ghat[c] * sqrt_phis(phis[c]);
+        /* w Ghat phi_s^(1/2) [Pa] times the dimensionless dev(B*). */
+        f = vhe_body_weight(phis[c]) * Ghat[c] * sqrt_phis(phis[c]);
         tr3 = (B[0] + B[3] + B[5]) / 3.0;
         S[0] = f * (B[0] - tr3);
         S[1] = f * B[1];

@@ -19,7 +19,10 @@
 #    solids are carried geometrically: the lower disk, flattened on the
 #    floor (G 10 Pa under 20 Pa of weight), leaves shreds of its corners in
 #    the wall cells as it rounds up (up to 4 regions at a write, bodies 0
-#    and 1 always there, their counted volume within 2.1 %), and the disks
+#    and 1 always there, their counted volume within 1.3 %, 2.3 % with
+#    contact; below a quarter of a cell inside the outline a cell carries
+#    no stress, vhe_body_weight, so the corners shred more easily than
+#    when every cell was stressed in proportion to phi_s: 2.1 %), and the disks
 #    come within 0.09 cell (MULES's compression kept them 0.9 cell apart);
 #    at 128 cells the same (a shred of its skin on the floor).  With
 #    contact between them (contact { strength 0.5; }, off by default for
@@ -160,7 +163,7 @@ b01=$(both "$sc/$dat") d01=$(drift01 "$sc/$dat")
 # and 8.2e-4 m without, so the lower bar asks only that the disks never
 # touch (gap > 0), not that contact widens it
 checkKnown sedimentContact "$wmin == 2 and $wmax == 2 and $d < 1e-6 and $nt > 0 and $gc > $gmin" \
-    "$b01 == 1 and $d01 < 0.02 and $nt > 0 and $gc > 0" \
+    "$b01 == 1 and $d01 < 0.03 and $nt > 0 and $gc > 0" \
     "with contact { strength 0.5; }: bodies per write $wmin..$wmax, volume drift $d (bodies 0 and 1: $d01), $nt steps in contact, smallest gap $gc m (without contact $gmin m)" "$why"
 
 one="$WORK/sedimentOneColour"

@@ -145,30 +145,48 @@ START_TEST(test_elastic_stress)
 {
     /* B: an SPD, non-isochoric B; B* = phi_s^(1/2) B */
     const double B[6] = {1.7, 0.3, -0.2, 0.9, 0.15, 1.2};
-    const double Ghat[3] = {2e5, 0.0, 2e5};
-    const double phis[3] = {0.49, 0.0, 1e-9};
-    double Bs[18], sig[18];
-    const double sp = 0.7;   /* sqrt(0.49) */
+    const double Ghat[5] = {2e5, 0.0, 2e5, 2e5, 2e5};
+    const double phis[5] = {0.81, 0.0, 1e-9, 0.2, 0.5};
+    double Bs[30], sig[30];
     const double tr3 = (B[0] + B[3] + B[5]) / 3.0;
     int i;
 
     for (i = 0; i < 6; ++i) {
-        Bs[i] = sp * B[i];
+        Bs[i] = 0.9 * B[i];        /* sqrt(0.81) */
         Bs[6 + i] = 0.3 * B[i];    /* garbage in a fluid cell */
         Bs[12 + i] = 0.3 * B[i];   /* and below phis_min */
+        Bs[18 + i] = 0.7 * B[i];   /* a centre outside the outline */
+        Bs[24 + i] = sqrt(0.5) * B[i];   /* on the outline: half */
     }
-    vhe_elastic_stress(3, Ghat, phis, Bs, 1e-6, sig);
+    vhe_elastic_stress(5, Ghat, phis, Bs, 1e-6, sig);
     /* Ghat phi_s^(1/2) dev(B*) = Ghat phi_s dev(B) */
-    ASSERT_REL(sig[0], 2e5 * 0.49 * (B[0] - tr3), 1e-14);
-    ASSERT_REL(sig[1], 2e5 * 0.49 * B[1], 1e-14);
-    ASSERT_REL(sig[2], 2e5 * 0.49 * B[2], 1e-14);
-    ASSERT_REL(sig[3], 2e5 * 0.49 * (B[3] - tr3), 1e-14);
-    ASSERT_REL(sig[4], 2e5 * 0.49 * B[4], 1e-14);
-    ASSERT_REL(sig[5], 2e5 * 0.49 * (B[5] - tr3), 1e-14);
+    ASSERT_REL(sig[0], 2e5 * 0.81 * (B[0] - tr3), 1e-14);
+    ASSERT_REL(sig[1], 2e5 * 0.81 * B[1], 1e-14);
+    ASSERT_REL(sig[2], 2e5 * 0.81 * B[2], 1e-14);
+    ASSERT_REL(sig[3], 2e5 * 0.81 * (B[3] - tr3), 1e-14);
+    ASSERT_REL(sig[4], 2e5 * 0.81 * B[4], 1e-14);
+    ASSERT_REL(sig[5], 2e5 * 0.81 * (B[5] - tr3), 1e-14);
     /* traceless */
     ASSERT_NEAR(sig[0] + sig[3] + sig[5], 0.0, 1e-14 * max_abs(sig, 6));
-    /* zero in fluid and below phis_min */
-    ck_assert(max_abs(sig + 6, 12) == 0.0);
+    /* zero in fluid, below phis_min and a quarter cell outside */
+    ck_assert(max_abs(sig + 6, 18) == 0.0);
+    /* half the stress on the outline: w(1/2) = 1/2 */
+    for (i = 0; i < 6; ++i) {
+        ASSERT_REL(sig[24 + i], 0.5 * 0.5 / 0.81 * sig[i], 1e-14);
+    }
+}
+END_TEST
+
+START_TEST(test_body_weight)
+{
+    /* 0 up to 1/4, 1 from 3/4, linear (continuous) between */
+    ck_assert(vhe_body_weight(0.0) == 0.0);
+    ck_assert(vhe_body_weight(0.25) == 0.0);
+    ASSERT_NEAR(vhe_body_weight(0.5), 0.5, 1e-15);
+    ck_assert(vhe_body_weight(0.75) == 1.0);
+    ck_assert(vhe_body_weight(1.0 + 1e-12) == 1.0);
+    ASSERT_NEAR(vhe_body_weight(0.25 + 1e-9), 2e-9, 1e-15);
+    ASSERT_NEAR(vhe_body_weight(0.75 - 1e-9), 1.0 - 2e-9, 1e-15);
 }
 END_TEST
 
@@ -241,6 +259,7 @@ static Suite *mixture_suite(void)
     tcase_add_test(tc, test_mixture_three_phases);
     tcase_add_test(tc, test_mixture_two_solids_and_nulls);
     tcase_add_test(tc, test_elastic_stress);
+    tcase_add_test(tc, test_body_weight);
     tcase_add_test(tc, test_wave_speed_and_elastic_dt);
     tcase_add_test(tc, test_energies);
     suite_add_tcase(s, tc);

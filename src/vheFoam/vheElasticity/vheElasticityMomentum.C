@@ -17,7 +17,12 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
     scalar deltaT
 ) const
 {
-    return tmp<volScalarField>
+    // The stress increment's viscosity where the body's stress lives
+    // (vhe_body_weight): none in the cells whose centre lies a quarter of
+    // a cell or more outside its outline, as their stress is none.  Their
+    // faces with the body's cells keep half of it (the linear face value),
+    // as their face stress keeps half of the body's.
+    tmp<volScalarField> tmu
     (
         new volScalarField
         (
@@ -26,6 +31,22 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
            *mixture_.Ghat()*mixture_.phis()
         )
     );
+    volScalarField& mu = tmu.ref();
+    const volScalarField& phis = mixture_.phis();
+    forAll(mu, c)
+    {
+        mu[c] *= vhe_body_weight(phis[c]);
+    }
+    forAll(mu.boundaryField(), patchi)
+    {
+        scalarField& mp = mu.boundaryFieldRef()[patchi];
+        const scalarField& pp = phis.boundaryField()[patchi];
+        forAll(mp, i)
+        {
+            mp[i] *= vhe_body_weight(pp[i]);
+        }
+    }
+    return tmu;
 }
 
 

@@ -7,6 +7,7 @@
 #include "fvc.H"
 #include "vhe.h"
 #include "vheFlat.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -86,6 +87,104 @@ Foam::tmp<Foam::tensorField> Foam::vheElasticity::solidVelocityGradient
 }
 
 
+void Foam::vheElasticity::bodyEdgeGradient
+(
+    const labelUList& cells,
+    tensorField& g
+) const
+{
+    // A cell of a body's edge that is mostly fluid (w(phi_s) = 0,
+    // vhe_body_weight: its centre a quarter of a cell or more outside the
+    // outline) carries no elastic stress, but keeps B* for when the body
+    // moves over its centre.  Its velocity gradient is the fluid's shear,
+    // which the body's material in it does not feel (no-slip puts the
+    // shear in the fluid beside the body): stretched by it, the material
+    // recorded the fluid's slide past the body as a strain that never
+    // relaxes, and brought it into the body as a jolt of G times it when
+    // its cell's share of the stress came on (a stiff disk in the
+    // lid-driven cavity, G/(rho U^2) = 1e8, spun up to 2.7e4 times the lid
+    // speed).  So there the material takes the strain rate of the body's
+    // cells beside it, weighted by their phi_s (the solid extrapolated
+    // into its edge, as the reference map technique does; Kamrin, Rycroft
+    // and Nave 2012).  Only there: a cell with a share of the stress has
+    // the stress increment's viscosity on its own velocity gradient in the
+    // momentum equation, and its B* must take the same gradient, or the
+    // stress it keeps is not the one the step applied (an explicit elastic
+    // stress: a cavity disk at 1e8 spun up to 1441 times the lid speed
+    // with the extrapolation up to phi_s = 1/2).  Cells without such a
+    // neighbour (a body thinner than a cell) keep their own.
+    const auto inBody = [](const scalar p)
+    {
+        return vhe_body_weight(p) > 0;
+    };
+    const scalarField& phis = mixture_.phis().primitiveField();
+    labelList index(mesh_.nCells(), -1);
+    forAll(cells, i)
+    {
+        index[cells[i]] = i;
+    }
+    tensorField sum(cells.size(), Zero);
+    scalarField wsum(cells.size(), Zero);
+    const auto take = [&](label i, scalar w, const tensor& t)
+    {
+        sum[i] += w*t;
+        wsum[i] += w;
+    };
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    forAll(own, f)
+    {
+        const label o = index[own[f]], n = index[nei[f]];
+        if (o < 0 || n < 0) continue;
+        const scalar po = phis[own[f]], pn = phis[nei[f]];
+        if (!inBody(po) && inBody(pn)) take(o, pn, g[n]);
+        if (!inBody(pn) && inBody(po)) take(n, po, g[o]);
+    }
+
+    // Across coupled patches: the other side's phi_s and gradient
+    const label nInt = mesh_.nInternalFaces();
+    scalarField bPhis(mesh_.nBoundaryFaces(), -1);
+    tensorField bG(mesh_.nBoundaryFaces(), Zero);
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    forAll(pbm, patchi)
+    {
+        if (!pbm[patchi].coupled()) continue;
+        const labelUList& fc = pbm[patchi].faceCells();
+        const label b0 = pbm[patchi].start() - nInt;
+        forAll(fc, j)
+        {
+            const label i = index[fc[j]];
+            if (i >= 0)
+            {
+                bPhis[b0 + j] = phis[fc[j]];
+                bG[b0 + j] = g[i];
+            }
+        }
+    }
+    syncTools::swapBoundaryFaceList(mesh_, bPhis);
+    syncTools::swapBoundaryFaceList(mesh_, bG);
+    forAll(pbm, patchi)
+    {
+        if (!pbm[patchi].coupled()) continue;
+        const labelUList& fc = pbm[patchi].faceCells();
+        const label b0 = pbm[patchi].start() - nInt;
+        forAll(fc, j)
+        {
+            const label i = index[fc[j]];
+            if (i >= 0 && !inBody(phis[fc[j]]) && inBody(bPhis[b0 + j]))
+            {
+                take(i, bPhis[b0 + j], bG[b0 + j]);
+            }
+        }
+    }
+
+    forAll(g, i)
+    {
+        if (wsum[i] > 0) g[i] = sum[i]/wsum[i];
+    }
+}
+
+
 void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
 {
     // The flow is incompressible, but the cell gradient of U (interpolated
@@ -106,6 +205,7 @@ void Foam::vheElasticity::stretch(const volVectorField& U, scalar deltaT)
         }
         tensorField gradU(solidVelocityGradient(U, cells));
         gradU = dev(gradU);
+        bodyEdgeGradient(cells, gradU);
         symmTensorField Bs(Bstar_.primitiveField(), cells);
         vhe_stretch(cells.size(), deltaT, flat(gradU), flat(Bs));
         symmTensorField& B = Bstar_.primitiveFieldRef();
