@@ -1,8 +1,8 @@
 # vheFoam: helper functions for Allwmake, Allrun, Alltest (sourced).
 
 # Debian packages each stage needs.
-# (libopenblas0-serial: the BLAS of the coupled step's LU, MUMPS; Debian's
-# reference BLAS took it 1.8 times as long)
+# (libopenblas0-serial: the BLAS of the coupled step's LU, MUMPS; with
+# Debian's reference BLAS test_stiff's stiff channel took 7.5 s, not 6.0)
 VHE_BUILD_PACKAGES="openfoam libopenfoam openmpi-bin libopenmpi-dev gcc g++ make
  pkg-config check dpkg-dev xz-utils bzip2 gmsh gnuplot-nox libpetsc-real-dev
  libopenblas0-serial"
