@@ -327,7 +327,10 @@ void Foam::coupledStepPETSc::solve
             bool wide = muT && (*muT)[i] > 0;
             if (muT)
             {
-                for (const label c : cellCells[i]) wide = wide || (*muT)[c] > 0;
+                for (const label c : cellCells[i])
+                {
+                    wide = wide || (*muT)[c] > 0;
+                }
             }
             if (wide)
             {
@@ -443,9 +446,10 @@ void Foam::coupledStepPETSc::solve
         }
     }
 
-    // The viscous stress's transpose part: its internal-face part in the
-    // matrix, the rest (boundary and coupled faces) explicit, as the
-    // difference between the whole term and that part at the current U
+    // The semi-implicit increment's transpose part (muT the elastic
+    // viscosity): its internal-face part in the matrix, the rest (boundary
+    // and coupled faces) explicit, as the difference between the whole
+    // term and that part at the current U
     if (muT)
     {
         addTranspose(mesh_, *muT, U, cmpts, start0, A, b);
