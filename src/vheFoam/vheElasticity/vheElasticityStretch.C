@@ -9,6 +9,8 @@
 #include "vheFlat.H"
 #include "syncTools.H"
 
+#include <functional>
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 Foam::tmp<Foam::tensorField> Foam::vheElasticity::solidVelocityGradient
@@ -146,37 +148,39 @@ void Foam::vheElasticity::bodyEdgeGradient
     scalarField bPhis(mesh_.nBoundaryFaces(), -1);
     tensorField bG(mesh_.nBoundaryFaces(), Zero);
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    forAll(pbm, patchi)
+    const auto forCoupledFaces = [&]
+    (
+        const std::function<void(label cell, label i, label b)>& visit
+    )
     {
-        if (!pbm[patchi].coupled()) continue;
-        const labelUList& fc = pbm[patchi].faceCells();
-        const label b0 = pbm[patchi].start() - nInt;
-        forAll(fc, j)
+        forAll(pbm, patchi)
         {
-            const label i = index[fc[j]];
-            if (i >= 0)
+            if (!pbm[patchi].coupled()) continue;
+            const labelUList& fc = pbm[patchi].faceCells();
+            const label b0 = pbm[patchi].start() - nInt;
+            forAll(fc, j)
             {
-                bPhis[b0 + j] = phis[fc[j]];
-                bG[b0 + j] = g[i];
+                if (index[fc[j]] >= 0) visit(fc[j], index[fc[j]], b0 + j);
             }
         }
-    }
+    };
+    forCoupledFaces
+    (
+        [&](label c, label i, label b)
+        {
+            bPhis[b] = phis[c];
+            bG[b] = g[i];
+        }
+    );
     syncTools::swapBoundaryFaceList(mesh_, bPhis);
     syncTools::swapBoundaryFaceList(mesh_, bG);
-    forAll(pbm, patchi)
-    {
-        if (!pbm[patchi].coupled()) continue;
-        const labelUList& fc = pbm[patchi].faceCells();
-        const label b0 = pbm[patchi].start() - nInt;
-        forAll(fc, j)
+    forCoupledFaces
+    (
+        [&](label c, label i, label b)
         {
-            const label i = index[fc[j]];
-            if (i >= 0 && !inBody(phis[fc[j]]) && inBody(bPhis[b0 + j]))
-            {
-                take(i, bPhis[b0 + j], bG[b0 + j]);
-            }
+            if (!inBody(phis[c]) && inBody(bPhis[b])) take(i, bPhis[b], bG[b]);
         }
-    }
+    );
 
     forAll(g, i)
     {
