@@ -11,7 +11,7 @@
 #include "fixedFluxPressureFvPatchScalarField.H"
 #include "calculatedFvPatchFields.H"
 #include "linear.H"
-#include "implicitTranspose.H"
+#include "transposeRows.H"
 
 #include <petscksp.h>
 
@@ -27,99 +27,6 @@ void check(PetscErrorCode ierr, const char* what)
         FatalErrorInFunction
             << "PETSc error " << ierr << " in " << what
             << Foam::exit(Foam::FatalError);
-    }
-}
-
-
-// The transpose part div(muT dev2(T(grad U))) in the momentum rows: its
-// internal-face part (implicitTranspose) in the matrix A, moved to the left
-// (the equation has -div), and in b the whole explicit term at the current
-// U less that part there
-void addTranspose
-(
-    const Foam::fvMesh& mesh,
-    const Foam::volScalarField& muT,
-    const Foam::volVectorField& U,
-    const Foam::labelList& cmpts,
-    const Foam::label start0,
-    Mat A,
-    Vec b
-)
-{
-    using namespace Foam;
-    const label nC = mesh.nCells();
-    const label nd = cmpts.size();
-    const label nb = nd + 1;
-
-    // Each row cell's column cells and 3 x 3 blocks (j, i)
-    List<DynamicList<label>> cols(nC);
-    List<DynamicList<tensor>> blocks(nC);
-    implicitTranspose::coefficients
-    (
-        mesh, muT.primitiveField(),
-        [&](label P, direction j, label c, direction i, scalar v)
-        {
-            DynamicList<label>& cp = cols[P];
-            label k = cp.find(c);
-            if (k < 0)
-            {
-                k = cp.size();
-                cp.append(c);
-                blocks[P].append(tensor::zero);
-            }
-            blocks[P][k][3*j + i] += v;
-        }
-    );
-
-    // The whole explicit term, integrated over each cell
-    const vectorField whole
-    (
-        mesh.V()
-       *fvc::div
-        (
-            muT*dev2(T(fvc::grad(U))), "div((mu*dev2(T(grad(U)))))"
-        )().primitiveField()
-    );
-
-    List<PetscInt> rows(nd), colIdx;
-    List<PetscScalar> vals;
-    for (label P = 0; P < nC; ++P)
-    {
-        const label n = cols[P].size();
-        vector part(Zero);
-        colIdx.setSize(n*nd);
-        vals.setSize(nd*n*nd);
-        for (label k = 0; k < nd; ++k)
-        {
-            rows[k] = PetscInt((start0 + P)*nb + k);
-        }
-        for (label m = 0; m < n; ++m)
-        {
-            const label c = cols[P][m];
-            const tensor& B = blocks[P][m];
-            part += B & U[c];
-            for (label l = 0; l < nd; ++l)
-            {
-                colIdx[m*nd + l] = PetscInt((start0 + c)*nb + l);
-                for (label k = 0; k < nd; ++k)
-                {
-                    vals[k*n*nd + m*nd + l] = -B[3*cmpts[k] + cmpts[l]];
-                }
-            }
-        }
-        if (n)
-        {
-            MatSetValues
-            (
-                A, nd, rows.cdata(), n*nd, colIdx.cdata(), vals.cdata(),
-                ADD_VALUES
-            );
-        }
-        for (label k = 0; k < nd; ++k)
-        {
-            PetscScalar r = whole[P][cmpts[k]] - part[cmpts[k]];
-            VecSetValues(b, 1, &rows[k], &r, ADD_VALUES);
-        }
     }
 }
 
@@ -313,39 +220,16 @@ void Foam::coupledStepPETSc::solve
     Mat A;
     const PetscInt nLocal = nC*nb;
     {
-        // A row's cells: the cell and its face neighbours, and where the
-        // transpose part acts (muT > 0 in the cell or a face neighbour)
-        // their face neighbours too (counted, not guessed: a guess of
-        // faces squared took 172 entries a row in 3D for 100)
+        // A row's cells: the cell and its face neighbours (and theirs
+        // where the transpose part acts, transposeRows)
         labelList nnz(nLocal, Zero);
         const cellList& cells = mesh_.cells();
-        const labelListList& cellCells = mesh_.cellCells();
-        DynamicList<label> ring;
         forAll(cells, i)
         {
-            label n = cells[i].size() + 1;
-            bool wide = muT && (*muT)[i] > 0;
-            if (muT)
-            {
-                for (const label c : cellCells[i])
-                {
-                    wide = wide || (*muT)[c] > 0;
-                }
-            }
-            if (wide)
-            {
-                ring.clear();
-                ring.append(i);
-                for (const label c : cellCells[i])
-                {
-                    if (!ring.found(c)) ring.append(c);
-                    for (const label c2 : cellCells[c])
-                    {
-                        if (!ring.found(c2)) ring.append(c2);
-                    }
-                }
-                n = ring.size() + cells[i].size() - cellCells[i].size();
-            }
+            const label n =
+                muT
+              ? transposeRows::width(mesh_, muT->primitiveField(), i)
+              : cells[i].size() + 1;
             for (label k = 0; k < nb; ++k)
             {
                 nnz[i*nb + k] = nb*n;
@@ -452,7 +336,7 @@ void Foam::coupledStepPETSc::solve
     // term and that part at the current U
     if (muT)
     {
-        addTranspose(mesh_, *muT, U, cmpts, start0, A, b);
+        transposeRows::add(mesh_, *muT, U, cmpts, start0, A, b);
     }
 
     // A face's terms in the rows of cell X (owner O, neighbour N): the
