@@ -31,20 +31,19 @@ Foam::tmp<Foam::volScalarField> Foam::vheElasticity::muElastic
            *mixture_.Ghat()*mixture_.phis()
         )
     );
+    const auto weigh = [](scalarField& mu, const scalarField& phis)
+    {
+        forAll(mu, i)
+        {
+            mu[i] *= vhe_body_weight(phis[i]);
+        }
+    };
     volScalarField& mu = tmu.ref();
     const volScalarField& phis = mixture_.phis();
-    forAll(mu, c)
-    {
-        mu[c] *= vhe_body_weight(phis[c]);
-    }
+    weigh(mu.primitiveFieldRef(), phis.primitiveField());
     forAll(mu.boundaryField(), patchi)
     {
-        scalarField& mp = mu.boundaryFieldRef()[patchi];
-        const scalarField& pp = phis.boundaryField()[patchi];
-        forAll(mp, i)
-        {
-            mp[i] *= vhe_body_weight(pp[i]);
-        }
+        weigh(mu.boundaryFieldRef()[patchi], phis.boundaryField()[patchi]);
     }
     return tmu;
 }
