@@ -1,0 +1,55 @@
+#!/bin/bash
+# floating.sh DIR [CELLS [ENDTIME]]: does a floating box's draft depend on
+# its stiffness?  test_floating's Archimedes box (0.3 x 0.1, rho_s 500 in
+# water of nu 1e-2 under air, released at half its draft, a 1 x 1 m tank of
+# CELLS x CELLS cells, 40 by default) run to ENDTIME (8 s by default:
+# the heave has died out by t = 5) as a rigid body and as elastic bodies of
+# G/rho_s = 10 and 100 m^2/s^2.  Prints, per case, the mean draft over the
+# last 2 s against Archimedes' (rho_s - rho_air)/(rho_w - rho_air) x 0.1,
+# in per cent of the height (negative: floats high), and the submerged
+# area at the end against Archimedes' (from the written fractions).
+# About 2 min at 40 cells.
+. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+d=$1 n=${2:-40} tend=${3:-8}
+mkdir -p "$d"
+box=(nx="$n" ny="$n" depthOil=0 depthWater=0.5 shape=box blockWidth=0.3
+     blockHeight=0.1 nuWater=1e-2 writeInterval=1 blockBottom=0.475
+     rhoSolid=500 endTime="$tend")
+printf "# %-8s %12s %12s %14s\n" case draft "error % h" "submerged/A"
+for c in rigid G10 G100; do
+    case $c in
+        rigid) extra=(rigid=yes) ;;
+        G10) extra=(GperRho=10) ;;
+        G100) extra=(GperRho=100) ;;
+    esac
+    rm -rf "${d:?}/$c"
+    sceneCase floatingBlock "$d/$c" "${box[@]}" "${extra[@]}" \
+        && run "$d/$c" setFields && run "$d/$c" setBodies && run "$d/$c" vheFoam \
+        || { echo "$c failed: $d/$c" >&2; continue; }
+    python3 - "$d/$c" "$tend" "$c" <<'PY'
+import re, sys
+case, tend, name = sys.argv[1], float(sys.argv[2]), sys.argv[3]
+def table(p):
+    return [[float(x) for x in l.split()] for l in open(p)
+            if l.strip() and not l.startswith('#')]
+level = {r[0]: r[1] for r in table(case + '/postProcessing/waterLevel/0/liquidLevel.dat')}
+if name == 'rigid':   # centroids at the writes
+    rows = [(r[0], r[6]) for r in table(case + '/postProcessing/bodies/0/bodies.dat')]
+else:                 # every step
+    rows = [(r[0], r[12]) for r in table(case + '/postProcessing/solidDiagnostics/0/solidDiagnostics.dat')]
+dr = [level[t] - (y - 0.05) for t, y in rows if t >= tend - 2 and t in level]
+draft = sum(dr)/len(dr)
+exact = 499/999*0.1
+def field(name):
+    s = open('%s/%g/%s' % (case, tend, name)).read()
+    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(', s)
+    return [float(v) for v in s[m.end():].split(None, int(m.group(1)))[:int(m.group(1))]]
+a, w = field('alpha.block'), field('alpha.water')
+n = int(round(len(a)**0.5)); dx = 1.0/n
+lev = sum(w[j*n] for j in range(n))*dx          # water column at the wall
+sub = sum(a[j*n + i]*dx*dx*min(max((lev - j*dx)/dx, 0), 1)
+          for j in range(n) for i in range(n))
+print('  %-8s %12.5f %12.2f %14.4f' % (name, draft, 100*(draft - exact)/0.1,
+                                      sub/(sum(a)*dx*dx*exact/0.1)))
+PY
+done
