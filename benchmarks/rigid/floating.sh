@@ -7,8 +7,9 @@
 # G/rho_s = 10 and 100 m^2/s^2.  Prints, per case, the mean draft over the
 # last 2 s against Archimedes' (rho_s - rho_air)/(rho_w - rho_air) x 0.1,
 # in per cent of the height (negative: floats high), and the submerged
-# area at the end against Archimedes' (from the written fractions).
-# About 2 min at 40 cells.
+# area at the end against Archimedes' (from the written fractions), and for
+# the elastic boxes the vertical elastic traction through the box's
+# outline at the end (edgeTraction.py).  About 2 min at 40 cells.
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
 d=$1 n=${2:-40} tend=${3:-8}
 mkdir -p "$d"
@@ -52,4 +53,5 @@ sub = sum(a[j*n + i]*dx*dx*min(max((lev - j*dx)/dx, 0), 1)
 print('  %-8s %12.5f %12.2f %14.4f' % (name, draft, 100*(draft - exact)/0.1,
                                       sub/(sum(a)*dx*dx*exact/0.1)))
 PY
+    [ "$c" = rigid ] || python3 "$(dirname "$0")/edgeTraction.py" "$d/$c" "$tend"
 done
