@@ -58,7 +58,9 @@ Foam::coupledStepPETSc::coupledStepPETSc
 :
     mesh_(mesh),
     options_(options),
-    started_(false)
+    started_(false),
+    A_(nullptr),
+    ksp_(nullptr)
 {
     start();
 }
@@ -66,6 +68,8 @@ Foam::coupledStepPETSc::coupledStepPETSc
 
 Foam::coupledStepPETSc::~coupledStepPETSc()
 {
+    if (ksp_) KSPDestroy(&ksp_);
+    if (A_) MatDestroy(&A_);
     if (started_)
     {
         PetscFinalize();
@@ -74,6 +78,39 @@ Foam::coupledStepPETSc::~coupledStepPETSc()
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::coupledStepPETSc::samePattern(Mat A) const
+{
+    bool same = A_ != nullptr;
+    if (same)
+    {
+        PetscInt m0, n0, m1, n1;
+        MatGetLocalSize(A_, &m0, &n0);
+        MatGetLocalSize(A, &m1, &n1);
+        same = m0 == m1 && n0 == n1;
+    }
+    if (same)
+    {
+        PetscInt r0, r1;
+        MatGetOwnershipRange(A, &r0, &r1);
+        for (PetscInt r = r0; same && r < r1; ++r)
+        {
+            PetscInt n0, n1;
+            const PetscInt *c0, *c1;
+            MatGetRow(A_, r, &n0, &c0, nullptr);
+            MatGetRow(A, r, &n1, &c1, nullptr);
+            same = n0 == n1;
+            for (PetscInt k = 0; same && k < n0; ++k)
+            {
+                same = c0[k] == c1[k];
+            }
+            MatRestoreRow(A, r, &n1, &c1, nullptr);
+            MatRestoreRow(A_, r, &n0, &c0, nullptr);
+        }
+    }
+    return returnReduce(same, andOp<bool>());
+}
+
 
 void Foam::coupledStepPETSc::start()
 {
@@ -466,21 +503,38 @@ void Foam::coupledStepPETSc::solve
         VecRestoreArray(x, &xa);
     }
 
-    KSP ksp;
-    check(KSPCreate(PETSC_COMM_WORLD, &ksp), "KSPCreate");
-    check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
-    check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+    // The kept solver where the pattern is the same: new values copied
+    // into the kept matrix (its nonzero state unchanged, so the LU's
+    // setup is numeric only), none where they are the same (the setup is
+    // skipped: the factorisation is reused as it is)
+    if (samePattern(A))
     {
+        PetscBool equal = PETSC_FALSE;
+        check(MatEqual(A_, A, &equal), "MatEqual");
+        if (!equal)
+        {
+            check(MatCopy(A, A_, SAME_NONZERO_PATTERN), "MatCopy");
+        }
+        MatDestroy(&A);
+    }
+    else
+    {
+        if (ksp_) KSPDestroy(&ksp_);
+        if (A_) MatDestroy(&A_);
+        A_ = A;
+        check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "KSPCreate");
+        check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
+        check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
         KSPType type;
-        KSPGetType(ksp, &type);
+        KSPGetType(ksp_, &type);
         if (std::string(type) != KSPPREONLY)
         {
-            KSPSetInitialGuessNonzero(ksp, PETSC_TRUE);
+            KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE);
         }
     }
-    check(KSPSolve(ksp, b, x), "KSPSolve");
+    check(KSPSolve(ksp_, b, x), "KSPSolve");
     KSPConvergedReason reason;
-    KSPGetConvergedReason(ksp, &reason);
+    KSPGetConvergedReason(ksp_, &reason);
     if (reason < 0)
     {
         WarningInFunction
@@ -501,10 +555,8 @@ void Foam::coupledStepPETSc::solve
         }
         VecRestoreArrayRead(x, &xa);
     }
-    KSPDestroy(&ksp);
     VecDestroy(&x);
     VecDestroy(&b);
-    MatDestroy(&A);
 
     U.correctBoundaryConditions();
     p_rgh.correctBoundaryConditions();
