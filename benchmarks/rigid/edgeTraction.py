@@ -11,30 +11,18 @@ of depth, split into side faces and top/bottom faces, and prints it
 against the box's weight rho_s g A.
 """
 import math
-import re
+import os
 import sys
 
-
-def field(case, t, name):
-    s = open('%s/%s/%s' % (case, t, name)).read()
-    m = re.search(r'internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(', s)
-    n = int(m.group(2))
-    body = s[m.end():]
-    if m.group(1) == 'scalar':
-        return [float(v) for v in body.split(None, n)[:n]]
-    return [[float(x) for x in v.split()]
-            for v in re.findall(r'\(([^()]*)\)', body)[:n]]
-
-
-def param(case, key):
-    m = re.search(r'^%s\s+([^;]+);' % key,
-                  open(case + '/system/parameters').read(), re.M)
-    return float(m.group(1))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'tests', 'cases'))
+from floating import internalField, parameter  # noqa: E402
 
 
 def main(case, t):
-    G = param(case, 'GperRho')*param(case, 'rhoSolid')
-    B, ph = field(case, t, 'Bstar'), field(case, t, 'phis')
+    G = parameter(case, 'GperRho')*parameter(case, 'rhoSolid')
+    B = internalField('%s/%s/Bstar' % (case, t), 'symmTensor')
+    ph = internalField('%s/%s/phis' % (case, t), 'scalar')
     n = int(round(math.sqrt(len(ph))))
     dx = 1.0/n
     w = [min(max((p - 0.25)/0.5, 0), 1) for p in ph]
@@ -57,8 +45,8 @@ def main(case, t):
                     side += 0.5*(sxy[c] + sxy[d])*di*dx
                 else:
                     ends += 0.5*(syy[c] + syy[d])*dj*dx
-    weight = param(case, 'rhoSolid')*param(case, 'g') \
-        * param(case, 'blockWidth')*param(case, 'blockHeight')
+    weight = parameter(case, 'rhoSolid')*parameter(case, 'g') \
+        * parameter(case, 'blockWidth')*parameter(case, 'blockHeight')
     print('t = %s: up through the sides %.3f N/m (%.2f %% of the weight %.1f '
           'N/m), through top and bottom %.3f N/m'
           % (t, side, 100*side/weight, weight, ends))

@@ -27,31 +27,13 @@ for c in rigid G10 G100; do
     sceneCase floatingBlock "$d/$c" "${box[@]}" "${extra[@]}" \
         && run "$d/$c" setFields && run "$d/$c" setBodies && run "$d/$c" vheFoam \
         || { echo "$c failed: $d/$c" >&2; continue; }
-    python3 - "$d/$c" "$tend" "$c" <<'PY'
-import re, sys
-case, tend, name = sys.argv[1], float(sys.argv[2]), sys.argv[3]
-def table(p):
-    return [[float(x) for x in l.split()] for l in open(p)
-            if l.strip() and not l.startswith('#')]
-level = {r[0]: r[1] for r in table(case + '/postProcessing/waterLevel/0/liquidLevel.dat')}
-if name == 'rigid':   # centroids at the writes
-    rows = [(r[0], r[6]) for r in table(case + '/postProcessing/bodies/0/bodies.dat')]
-else:                 # every step
-    rows = [(r[0], r[12]) for r in table(case + '/postProcessing/solidDiagnostics/0/solidDiagnostics.dat')]
-dr = [level[t] - (y - 0.05) for t, y in rows if t >= tend - 2 and t in level]
-draft = sum(dr)/len(dr)
-exact = 499/999*0.1
-def field(name):
-    s = open('%s/%g/%s' % (case, tend, name)).read()
-    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(', s)
-    return [float(v) for v in s[m.end():].split(None, int(m.group(1)))[:int(m.group(1))]]
-a, w = field('alpha.block'), field('alpha.water')
-n = int(round(len(a)**0.5)); dx = 1.0/n
-lev = sum(w[j*n] for j in range(n))*dx          # water column at the wall
-sub = sum(a[j*n + i]*dx*dx*min(max((lev - j*dx)/dx, 0), 1)
-          for j in range(n) for i in range(n))
-print('  %-8s %12.5f %12.2f %14.4f' % (name, draft, 100*(draft - exact)/0.1,
-                                      sub/(sum(a)*dx*dx*exact/0.1)))
-PY
+    # the draft over the last 2 s: of the rigid body's centroid at the
+    # writes, of the elastic one's every step
+    how=draft; [ "$c" = rigid ] && how=bodyDraft
+    draft=$(python3 "$TESTS_DIR/floating.py" $how "$d/$c" 0.1 \
+        "$(awk -v t="$tend" 'BEGIN {print t - 2}')")
+    sub=$(python3 "$TESTS_DIR/floating.py" submerged "$d/$c" "$tend")
+    awk -v c="$c" -v d="$draft" -v s="$sub" 'BEGIN {
+        printf "  %-8s %12.5f %12.2f %14.4f\n", c, d, 100*(d - 499/999*0.1)/0.1, s}'
     [ "$c" = rigid ] || python3 "$(dirname "$0")/edgeTraction.py" "$d/$c" "$tend"
 done

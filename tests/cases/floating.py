@@ -14,6 +14,9 @@ Usage:
                                      volume (phaseVolumes function object)
   floating.py airSpeed CASE TIME     largest speed in pure air (alpha.air
                                      > 0.99) at TIME (ascii fields)
+  floating.py submerged CASE TIME    the body's area below the water level
+                                     at the wall against Archimedes', at
+                                     TIME (2D, nx = ny, a 1 x 1 m tank)
 """
 import math
 import re
@@ -37,8 +40,15 @@ def internalField(path, kind):
                   % kind, text, re.S)
     values = [line.strip('() ').split() for line in m.group(2).split('\n')
               if line.strip()]
-    return [[float(x) for x in v] for v in values] if kind == 'vector' \
-        else [float(v[0]) for v in values]
+    return [float(v[0]) for v in values] if kind == 'scalar' \
+        else [[float(x) for x in v] for v in values]
+
+
+def parameter(case, key):
+    # a number of the case's system/parameters
+    m = re.search(r'^%s\s+([^;]+);' % key,
+                  open(case + '/system/parameters').read(), re.M)
+    return float(m.group(1))
 
 
 def main():
@@ -74,8 +84,20 @@ def main():
         air = internalField('%s/%s/alpha.air' % (case, time), 'scalar')
         print('%.3g' % max(math.sqrt(sum(c*c for c in u))
                            for u, a in zip(U, air) if a > 0.99))
+    elif what == 'submerged':
+        time = sys.argv[3]
+        a = internalField('%s/%s/alpha.block' % (case, time), 'scalar')
+        w = internalField('%s/%s/alpha.water' % (case, time), 'scalar')
+        n = int(round(math.sqrt(len(a))))
+        dx = 1.0/n
+        level = sum(w[j*n] for j in range(n))*dx   # the wall's water column
+        sub = sum(a[j*n + i]*min(max((level - j*dx)/dx, 0), 1)
+                  for j in range(n) for i in range(n))*dx*dx
+        rho = [parameter(case, k) for k in ('rhoSolid', 'rhoWater', 'rhoAir')]
+        print('%.4f' % (sub/(sum(a)*dx*dx*(rho[0] - rho[2])/(rho[1] - rho[2]))))
     else:
         sys.exit(__doc__)
 
 
-main()
+if __name__ == '__main__':
+    main()
