@@ -13,8 +13,6 @@
 #include "linear.H"
 #include "transposeRows.H"
 
-#include <petscksp.h>
-
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
 namespace
