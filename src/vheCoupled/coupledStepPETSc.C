@@ -13,6 +13,9 @@
 #include "linear.H"
 #include "transposeRows.H"
 
+#include <algorithm>
+#include <cstring>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
 namespace
@@ -106,6 +109,54 @@ bool Foam::coupledStepPETSc::samePattern(Mat A) const
             MatRestoreRow(A_, r, &n0, &c0, nullptr);
         }
     }
+    return returnReduce(same, andOp<bool>());
+}
+
+
+bool Foam::coupledStepPETSc::sameMatrix
+(
+    const fvMatrix<vector>& UEqn,
+    const volScalarField& rho,
+    const volScalarField* muT
+)
+{
+    DynamicList<scalar> key
+    (
+        2*UEqn.diag().size() + 2*UEqn.upper().size() + 16
+    );
+    key.append(scalar(mesh_.time().timeIndex()));
+    key.append(UEqn.diag());
+    key.append(UEqn.upper());
+    key.append(UEqn.lower());
+    forAll(mesh_.boundary(), patchi)
+    {
+        for (const vector& v : UEqn.internalCoeffs()[patchi])
+        {
+            key.append(v.x()); key.append(v.y()); key.append(v.z());
+        }
+        for (const vector& v : UEqn.boundaryCoeffs()[patchi])
+        {
+            key.append(v.x()); key.append(v.y()); key.append(v.z());
+        }
+        key.append(rho.boundaryField()[patchi]);
+        if (muT) key.append(muT->boundaryField()[patchi]);
+    }
+    key.append(rho.primitiveField());
+    if (muT) key.append(muT->primitiveField());
+
+    bool same = A_ && key.size() == matrixKey_.size();
+    if (same)
+    {
+        same = std::equal
+        (
+            key.cbegin(), key.cend(), matrixKey_.cbegin(),
+            [](scalar a, scalar b)
+            {
+                return std::memcmp(&a, &b, sizeof(scalar)) == 0;
+            }
+        );
+    }
+    matrixKey_.transfer(key);
     return returnReduce(same, andOp<bool>());
 }
 
@@ -251,9 +302,12 @@ void Foam::coupledStepPETSc::solve
         }
     }
 
-    // The matrix
-    Mat A;
+    // The matrix, unless it is the kept one (the passes of a step): then
+    // the right-hand side alone
+    const bool keep = sameMatrix(UEqn, rho, muT);
+    Mat A = nullptr;
     const PetscInt nLocal = nC*nb;
+    if (!keep)
     {
         // A row's cells: the cell and its face neighbours (and theirs
         // where the transpose part acts, transposeRows)
@@ -290,10 +344,11 @@ void Foam::coupledStepPETSc::solve
         // -pc_fieldsplit_block_size nb)
     }
     Vec b, x;
-    check(MatCreateVecs(A, &x, &b), "MatCreateVecs");
+    check(MatCreateVecs(keep ? A_ : A, &x, &b), "MatCreateVecs");
 
     auto add = [&](PetscInt r, PetscInt c, scalar v)
     {
+        if (keep) return;
         PetscScalar val = v;
         MatSetValues(A, 1, &r, 1, &c, &val, ADD_VALUES);
     };
@@ -481,8 +536,11 @@ void Foam::coupledStepPETSc::solve
         addB(row(pRefCell, nd), c*p_rgh[pRefCell]);
     }
 
-    check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-    check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    if (!keep)
+    {
+        check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+        check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    }
     check(VecAssemblyBegin(b), "VecAssemblyBegin");
     check(VecAssemblyEnd(b), "VecAssemblyEnd");
 
@@ -501,18 +559,15 @@ void Foam::coupledStepPETSc::solve
         VecRestoreArray(x, &xa);
     }
 
-    // The kept solver where the pattern is the same: new values copied
-    // into the kept matrix (its nonzero state unchanged, so the LU's
-    // setup is numeric only), none where they are the same (the setup is
-    // skipped: the factorisation is reused as it is)
-    if (samePattern(A))
+    // The kept solver as it is for the kept matrix (its factorisation
+    // reused); where the pattern is the same, the new values copied into
+    // the kept matrix (its nonzero state unchanged, so the LU's setup is
+    // numeric only)
+    if (keep)
+    {}
+    else if (samePattern(A))
     {
-        PetscBool equal = PETSC_FALSE;
-        check(MatEqual(A_, A, &equal), "MatEqual");
-        if (!equal)
-        {
-            check(MatCopy(A, A_, SAME_NONZERO_PATTERN), "MatCopy");
-        }
+        check(MatCopy(A, A_, SAME_NONZERO_PATTERN), "MatCopy");
         MatDestroy(&A);
     }
     else

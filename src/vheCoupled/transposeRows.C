@@ -113,7 +113,7 @@ void Foam::transposeRows::add
                 }
             }
         }
-        if (n)
+        if (n && A)
         {
             MatSetValues
             (
