@@ -60,6 +60,7 @@ Foam::coupledStepPETSc::coupledStepPETSc
     mesh_(mesh),
     options_(options),
     started_(false),
+    lu_(false),
     A_(nullptr),
     ksp_(nullptr)
 {
@@ -117,7 +118,8 @@ bool Foam::coupledStepPETSc::sameMatrix
 (
     const fvMatrix<vector>& UEqn,
     const volScalarField& rho,
-    const volScalarField* muT
+    const volScalarField* muT,
+    const coupledRigidRows* rigid
 )
 {
     DynamicList<scalar> key
@@ -143,6 +145,19 @@ bool Foam::coupledStepPETSc::sameMatrix
     }
     key.append(rho.primitiveField());
     if (muT) key.append(muT->primitiveField());
+    if (rigid)
+    {
+        key.append(scalar(rigid->held.size()));
+        forAll(rigid->body, c)
+        {
+            if (rigid->body[c] < 0) continue;
+            key.append(scalar(c));
+            key.append(scalar(rigid->body[c]));
+            key.append(rigid->cpV[c]);
+            for (direction d = 0; d < 3; ++d) key.append(rigid->r[c][d]);
+        }
+        forAll(rigid->held, b) key.append(scalar(rigid->held[b]));
+    }
 
     bool same = A_ && key.size() == matrixKey_.size();
     if (same)
@@ -163,41 +178,13 @@ bool Foam::coupledStepPETSc::sameMatrix
 
 void Foam::coupledStepPETSc::start()
 {
+    // The options as given, else the defaults (coupledSolver)
     if (options_.empty())
     {
-        // The coupled fixed point needs the continuity rows solved to
-        // round-off.  In 2D a direct LU (MUMPS, any number of ranks): its
-        // fill grows as N log N.  In 3D it grows as N^(4/3) and its work
-        // as N^2: scene B's four spheres (16,800 cells) took 18.7 s a
-        // step, so there FGMRES with a Schur-complement field split
-        // (the velocity components of a cell field 0, its p_rgh field
-        // 1, hypre's BoomerAMG on both, the Schur complement from the
-        // velocity block's diagonal) to a relative tolerance of 1e-12:
-        // 0.95 s a step (the projection 0.065).  Its tolerance is
-        // relative to the whole right-hand side; at 1e-8 the Couette
-        // stiff disk turned at 0.984 of the flow's rate with D 0.015 and
-        // 33 passes a step, at 1e-12 as with the LU (0.9638, 12.6
-        // passes; the LU 0.9638, 11.7)
-        const label nd = mesh_.nSolutionD();
-        if (nd < 3)
-        {
-            options_ =
-                "-ksp_type preonly -pc_type lu"
-                " -pc_factor_mat_solver_type mumps";
-        }
-        else
-        {
-            options_ =
-                "-ksp_type fgmres -ksp_rtol 1e-12 -ksp_max_it 1000"
-                " -pc_type fieldsplit -pc_fieldsplit_block_size 4"
-                " -pc_fieldsplit_0_fields 0,1,2 -pc_fieldsplit_1_fields 3"
-                " -pc_fieldsplit_type schur"
-                " -pc_fieldsplit_schur_fact_type full"
-                " -pc_fieldsplit_schur_precondition selfp"
-                " -fieldsplit_0_ksp_type preonly -fieldsplit_0_pc_type hypre"
-                " -fieldsplit_1_ksp_type preonly -fieldsplit_1_pc_type hypre";
-        }
+        options_ = defaultOptions(mesh_);
     }
+    lu_ = direct(options_);
+
     PetscBool initialised = PETSC_FALSE;
     PetscInitialized(&initialised);
     if (!initialised)
@@ -225,7 +212,8 @@ void Foam::coupledStepPETSc::solve
     surfaceScalarField& accelerationFlux,
     volVectorField& acceleration,
     label pRefCell,
-    const volScalarField* muT
+    const volScalarField* muT,
+    coupledRigidRows* rigid
 )
 {
     const label nC = mesh_.nCells();
@@ -248,6 +236,65 @@ void Foam::coupledStepPETSc::solve
     {
         return PetscInt((start0 + celli)*nb + k);
     };
+
+    // Rigid bodies' unknowns (coupledRigidRows): nbd a body, its
+    // velocity's solved components and its rotation about the axes that
+    // turn the solved plane, after every cell's, on the last rank
+    const label nBodies = rigid ? rigid->held.size() : 0;
+    labelList rotAxes;
+    if (nd == 3)
+    {
+        rotAxes = labelList({0, 1, 2});
+    }
+    else if (nd == 2)
+    {
+        forAll(mesh_.solutionD(), c)
+        {
+            if (mesh_.solutionD()[c] < 0) rotAxes.append(c);
+        }
+    }
+    const label nbd = nd + rotAxes.size();
+    const bool lastRank = Pstream::myProcNo() == Pstream::nProcs() - 1;
+    const PetscInt bodyStart = PetscInt(cellsG.size())*nb;
+    auto bodyRow = [&](label b, label j) -> PetscInt
+    {
+        return bodyStart + PetscInt(b*nbd + j);
+    };
+    // The rigid velocity's derivative at cell c in unknown j
+    auto dUR = [&](label c, label j) -> vector
+    {
+        vector e(Zero);
+        if (j < nd)
+        {
+            e[cmpts[j]] = 1;
+            return e;
+        }
+        e[rotAxes[j - nd]] = 1;
+        return e ^ rigid->r[c];
+    };
+    // Per body: its cells (over all ranks) and their penalty; a body
+    // without a penalty is held at its velocity (else its rows are empty)
+    labelList bodyCells(nBodies, Zero);
+    List<bool> bodyHeld(nBodies, false);
+    if (nBodies)
+    {
+        scalarList bodyCp(nBodies, Zero);
+        forAll(rigid->body, c)
+        {
+            const label bi = rigid->body[c];
+            if (bi < 0) continue;
+            ++bodyCells[bi];
+            bodyCp[bi] += rigid->cpV[c];
+        }
+        Pstream::listCombineGather(bodyCells, plusEqOp<label>());
+        Pstream::listCombineScatter(bodyCells);
+        Pstream::listCombineGather(bodyCp, plusEqOp<scalar>());
+        Pstream::listCombineScatter(bodyCp);
+        forAll(bodyHeld, bi)
+        {
+            bodyHeld[bi] = rigid->held[bi] || bodyCp[bi] <= VSMALL;
+        }
+    }
 
     // Global ids of the cells across coupled patches
     volScalarField ids
@@ -304,9 +351,9 @@ void Foam::coupledStepPETSc::solve
 
     // The matrix, unless it is the kept one (the passes of a step): then
     // the right-hand side alone
-    const bool keep = sameMatrix(UEqn, rho, muT);
+    const bool keep = sameMatrix(UEqn, rho, muT, rigid);
     Mat A = nullptr;
-    const PetscInt nLocal = nC*nb;
+    const PetscInt nLocal = nC*nb + (lastRank ? nBodies*nbd : 0);
     if (!keep)
     {
         // A row's cells: the cell and its face neighbours (and theirs
@@ -319,9 +366,21 @@ void Foam::coupledStepPETSc::solve
                 muT
               ? transposeRows::width(mesh_, muT->primitiveField(), i)
               : cells[i].size() + 1;
+            const label nr =
+                rigid && rigid->body[i] >= 0 ? nbd : 0;
             for (label k = 0; k < nb; ++k)
             {
-                nnz[i*nb + k] = nb*n;
+                nnz[i*nb + k] = nb*n + nr;
+            }
+        }
+        if (lastRank)
+        {
+            for (label bi = 0; bi < nBodies; ++bi)
+            {
+                for (label j = 0; j < nbd; ++j)
+                {
+                    nnz[nC*nb + bi*nbd + j] = nd*bodyCells[bi] + nbd;
+                }
             }
         }
         List<PetscInt> dnz(nLocal), onz(nLocal);
@@ -536,6 +595,52 @@ void Foam::coupledStepPETSc::solve
         addB(row(pRefCell, nd), c*p_rgh[pRefCell]);
     }
 
+    // The rigid bodies' rows and columns: a body's cell k row takes
+    // -cpV dUR_k/dx_j, a free body's row j sum_c cpV dUR_j . (U - U_R) = 0
+    // (its penalty's net force, or torque, on it), a held body's x_j = its
+    // given velocity
+    if (nBodies)
+    {
+        forAll(rigid->body, c)
+        {
+            const label bi = rigid->body[c];
+            if (bi < 0) continue;
+            const scalar cpV = rigid->cpV[c];
+            for (label j = 0; j < nbd; ++j)
+            {
+                const vector d(dUR(c, j));
+                for (label k = 0; k < nd; ++k)
+                {
+                    const scalar v = cpV*d[cmpts[k]];
+                    add(row(c, k), bodyRow(bi, j), -v);
+                    if (!bodyHeld[bi]) add(bodyRow(bi, j), row(c, k), v);
+                }
+                if (bodyHeld[bi]) continue;
+                for (label m = 0; m < nbd; ++m)
+                {
+                    add(bodyRow(bi, j), bodyRow(bi, m), -cpV*(d & dUR(c, m)));
+                }
+            }
+        }
+        if (lastRank)
+        {
+            for (label bi = 0; bi < nBodies; ++bi)
+            {
+                for (label j = 0; j < nbd; ++j)
+                {
+                    const scalar given = j < nd
+                      ? rigid->Ub[bi][cmpts[j]]
+                      : rigid->omega[bi][rotAxes[j - nd]];
+                    if (bodyHeld[bi])
+                    {
+                        add(bodyRow(bi, j), bodyRow(bi, j), 1);
+                        addB(bodyRow(bi, j), given);
+                    }
+                }
+            }
+        }
+    }
+
     if (!keep)
     {
         check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
@@ -555,6 +660,18 @@ void Foam::coupledStepPETSc::solve
                 xa[i*nb + k] = U[i][cmpts[k]];
             }
             xa[i*nb + nd] = p_rgh[i];
+        }
+        if (lastRank)
+        {
+            for (label bi = 0; bi < nBodies; ++bi)
+            {
+                for (label j = 0; j < nbd; ++j)
+                {
+                    xa[nC*nb + bi*nbd + j] = j < nd
+                      ? rigid->Ub[bi][cmpts[j]]
+                      : rigid->omega[bi][rotAxes[j - nd]];
+                }
+            }
         }
         VecRestoreArray(x, &xa);
     }
@@ -605,6 +722,32 @@ void Foam::coupledStepPETSc::solve
                 U[i][cmpts[k]] = xa[i*nb + k];
             }
             p_rgh[i] = xa[i*nb + nd];
+        }
+        if (nBodies)
+        {
+            List<scalarField> xb(nBodies, scalarField(nbd, Zero));
+            if (lastRank)
+            {
+                forAll(xb, bi)
+                {
+                    forAll(xb[bi], j) xb[bi][j] = xa[nC*nb + bi*nbd + j];
+                }
+            }
+            forAll(xb, bi)
+            {
+                reduce(xb[bi], sumOp<scalarField>());
+                for (label j = 0; j < nbd; ++j)
+                {
+                    if (j < nd)
+                    {
+                        rigid->Ub[bi][cmpts[j]] = xb[bi][j];
+                    }
+                    else
+                    {
+                        rigid->omega[bi][rotAxes[j - nd]] = xb[bi][j];
+                    }
+                }
+            }
         }
         VecRestoreArrayRead(x, &xa);
     }

@@ -16,12 +16,37 @@
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
 
+void Foam::rigidBodies::penaltyForces
+(
+    const scalarField& cp,
+    const vectorField& UR,
+    const vectorField& U,
+    const scalarField& V
+) const
+{
+    const vectorField fc(cp*(UR - U)*V);
+    Fpen_ = List<vector>(nBodies_, Zero);
+    Tpen_ = List<vector>(nBodies_, Zero);
+    forAll(body_, c)
+    {
+        const label b = body_[c];
+        if (b < 0) continue;
+        Fpen_[b] += fc[c];
+        Tpen_[b] += r_[c] ^ fc[c];
+    }
+    bodyRegions::sumLists(Fpen_);
+    bodyRegions::sumLists(Tpen_);
+}
+
+
 void Foam::rigidBodies::solve
 (
     const fvVectorMatrix& UEqn,
     const volVectorField& rhs,
     volVectorField& U,
-    const std::function<void(fvVectorMatrix&)>& coupledSolve
+    const std::function<void(fvVectorMatrix&, coupledRigidRows*)>&
+        coupledSolve,
+    bool rigidRows
 ) const
 {
     const fvMesh& mesh = U.mesh();
@@ -102,6 +127,19 @@ void Foam::rigidBodies::solve
         dimensionedVector(dimVelocity, Zero)
     );
 
+    // The bodies' velocities solved with the flow, in one matrix
+    if (coupledSolve && rigidRows)
+    {
+        const scalarField cpV(cp*V);
+        coupledRigidRows rows{body_, cpV, r_, held_, Ub, omega};
+        fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U));
+        coupledSolve(UEqnHeld, &rows);
+        penaltyForces(cp, rigidField(Ub, omega), U.primitiveField(), V);
+        Info<< "Rigid bodies: " << nBodies_
+            << " held in 1 solve with the flow" << endl;
+        return;
+    }
+
     // The penalty raises the matrix's residual normalisation by up to P,
     // and the body's net force is P times the held cells' small velocity
     // error: U's tolerance divided by P (and no relTol), else the force
@@ -163,7 +201,7 @@ void Foam::rigidBodies::solve
         if (coupledSolve)
         {
             fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U) == Cp*UR);
-            coupledSolve(UEqnHeld);
+            coupledSolve(UEqnHeld, nullptr);
         }
         else
         {
@@ -172,23 +210,9 @@ void Foam::rigidBodies::solve
         }
 
         // The penalty's net force and torque on each body
-        const vectorField fc
-        (
-            cp*(UR.primitiveField() - U.primitiveField())*V
-        );
-        List<vector>& F = Fpen_;
-        List<vector>& T = Tpen_;
-        F = List<vector>(nBodies_, Zero);
-        T = List<vector>(nBodies_, Zero);
-        forAll(body_, c)
-        {
-            const label b = body_[c];
-            if (b < 0) continue;
-            F[b] += fc[c];
-            T[b] += r_[c] ^ fc[c];
-        }
-        bodyRegions::sumLists(F);
-        bodyRegions::sumLists(T);
+        penaltyForces(cp, UR.primitiveField(), U.primitiveField(), V);
+        const List<vector>& F = Fpen_;
+        const List<vector>& T = Tpen_;
 
         // The preconditioned residual: the penalty holds the body back,
         // so the free body moves the other way, -K^-1 R
