@@ -124,9 +124,9 @@ d=$(paste -d' ' <(awk '!/^#/ {print $1, $2, $3, $4}' "$ob.serial/postProcessing/
 check obstacleParallel "$d < 5e-9" "largest difference of the free disk's centre, serial against 2 ranks, $d m over $(grep -vc '^#' "$ob.serial/postProcessing/rigidBodies/0/poses.dat") rows (cell 5e-4 m)"
 # Jeffery's orbit: a free rigid ellipse (aspect ratio 2) in plane Couette
 # flow tumbles with the period of Jeffery (1922), 2 pi (a/b + b/a)/G, made
-# longer by the walls (benchmarks/rigid/jeffery.sh: half periods 0.971,
-# 1.030, 1.047 of Jeffery's at 32, 64, 128 cells, order 1.9, towards about
-# 1.053 with the walls at 3.3 semi-axes).  At 64 cells: within 1.0 to 1.08
+# longer by the walls (benchmarks/rigid/jeffery.sh: half periods 1.042,
+# 1.072, 1.059 of Jeffery's at 32, 64, 128 cells, solved coupled, about
+# 1.06 with the walls at 3.3 semi-axes).  At 64 cells: within 1.0 to 1.08
 # of Jeffery's half period, its centre still (1e-6), its shape kept
 # (Taylor deformation of its fraction 1/3 within 0.01; measured 2.8e-3).
 je="$WORK/jeffery"
