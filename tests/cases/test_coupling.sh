@@ -85,6 +85,30 @@ for r in 1 1e8; do
     run "$d" vheFoam || fail "channel${r}Run" "$d/log.vheFoam"
     python3 "$stiff/evaluate.py" "$d" channel "$r" "$G" 0.0122 0 >> "$csv"
 done
+# Rigid bodies held in the coupled matrix (coupledRigidRows: their
+# velocities unknowns of it, the rows on the last rank, the cells' columns
+# across ranks): scene A's channel with 13 rigid disks at a viscous number
+# of 41, serial against 2 ranks split across the channel (through disks),
+# to t = 0.1 (measured: one solve a step, poses equal to the 1e-13 written)
+rr="$WORK/rigidRows"
+channelCase "$rr.serial" nDisks=13 rigid=yes endTime=0.1 writeInterval=0.1 \
+    && run "$rr.serial" setBodies && cp -r "$rr.serial" "$rr.parallel" \
+    || fail setup "$rr.serial"
+run "$rr.serial" vheFoam || fail rigidRowsSerialRun "$rr.serial/log.vheFoam"
+(run "$rr.parallel" decomposePar && cd "$rr.parallel" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
+    || fail rigidRowsParallelRun "$rr.parallel/log.vheFoam"
+# (the first steps, growing from 1e-4 s, are below a viscous number of 1
+# and projected: 4 of 30)
+solves=$(grep "^Rigid bodies: .* held in" "$rr.serial/log.vheFoam" | tail -20 | grep -c "held in 1 solve with the flow")
+steps=$(grep "^Rigid bodies: .* held in" "$rr.serial/log.vheFoam" | tail -20 | wc -l)
+d=$(paste -d' ' <(awk '!/^#/' "$rr.serial/postProcessing/rigidBodies/0/poses.dat") \
+                <(awk '!/^#/' "$rr.parallel/postProcessing/rigidBodies/0/poses.dat") \
+    | awk '{h = NF/2; if ($1 != $(1 + h) || $2 != $(2 + h)) bad = 1;
+            for (i = 3; i <= h; i++) {e = $i - $(i + h); if (e < 0) e = -e; if (e > m) m = e}; n++}
+           END {if (bad || n == 0) print 1; else printf "%.3g\n", m}')
+check rigidRowsOneSolve "$steps == 20 and $solves == $steps" "$solves of the last $steps steps held the disks in one coupled solve"
+check rigidRowsParallel "$d < 1e-10" "largest difference of the disks' poses and velocities, serial against 2 ranks, $d"
+
 python3 "$stiff/evaluate.py" --judge "$csv" | sed -E 's/^(PASS|FAIL) (cavity|channel) G\/\(rho U\^2\) ([0-9e.]+)/\1 \2Stiffness_\3/'
 nfail=$((nfail + $(python3 "$stiff/evaluate.py" --judge "$csv" | grep -c "^FAIL")))
 finish
