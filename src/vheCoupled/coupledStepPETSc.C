@@ -12,9 +12,8 @@
 #include "calculatedFvPatchFields.H"
 #include "linear.H"
 #include "transposeRows.H"
+#include "rigidBodyRows.H"
 
-#include <algorithm>
-#include <cstring>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -81,101 +80,6 @@ Foam::coupledStepPETSc::~coupledStepPETSc()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::coupledStepPETSc::samePattern(Mat A) const
-{
-    bool same = A_ != nullptr;
-    if (same)
-    {
-        PetscInt m0, n0, m1, n1;
-        MatGetLocalSize(A_, &m0, &n0);
-        MatGetLocalSize(A, &m1, &n1);
-        same = m0 == m1 && n0 == n1;
-    }
-    if (same)
-    {
-        PetscInt r0, r1;
-        MatGetOwnershipRange(A, &r0, &r1);
-        for (PetscInt r = r0; same && r < r1; ++r)
-        {
-            PetscInt n0, n1;
-            const PetscInt *c0, *c1;
-            MatGetRow(A_, r, &n0, &c0, nullptr);
-            MatGetRow(A, r, &n1, &c1, nullptr);
-            same = n0 == n1;
-            for (PetscInt k = 0; same && k < n0; ++k)
-            {
-                same = c0[k] == c1[k];
-            }
-            MatRestoreRow(A, r, &n1, &c1, nullptr);
-            MatRestoreRow(A_, r, &n0, &c0, nullptr);
-        }
-    }
-    return returnReduce(same, andOp<bool>());
-}
-
-
-bool Foam::coupledStepPETSc::sameMatrix
-(
-    const fvMatrix<vector>& UEqn,
-    const volScalarField& rho,
-    const volScalarField* muT,
-    const coupledRigidRows* rigid
-)
-{
-    DynamicList<scalar> key
-    (
-        2*UEqn.diag().size() + 2*UEqn.upper().size() + 16
-    );
-    key.append(scalar(mesh_.time().timeIndex()));
-    key.append(UEqn.diag());
-    key.append(UEqn.upper());
-    key.append(UEqn.lower());
-    forAll(mesh_.boundary(), patchi)
-    {
-        for (const vector& v : UEqn.internalCoeffs()[patchi])
-        {
-            key.append(v.x()); key.append(v.y()); key.append(v.z());
-        }
-        for (const vector& v : UEqn.boundaryCoeffs()[patchi])
-        {
-            key.append(v.x()); key.append(v.y()); key.append(v.z());
-        }
-        key.append(rho.boundaryField()[patchi]);
-        if (muT) key.append(muT->boundaryField()[patchi]);
-    }
-    key.append(rho.primitiveField());
-    if (muT) key.append(muT->primitiveField());
-    if (rigid)
-    {
-        key.append(scalar(rigid->held.size()));
-        forAll(rigid->body, c)
-        {
-            if (rigid->body[c] < 0) continue;
-            key.append(scalar(c));
-            key.append(scalar(rigid->body[c]));
-            key.append(rigid->cpV[c]);
-            for (direction d = 0; d < 3; ++d) key.append(rigid->r[c][d]);
-        }
-        forAll(rigid->held, b) key.append(scalar(rigid->held[b]));
-    }
-
-    bool same = A_ && key.size() == matrixKey_.size();
-    if (same)
-    {
-        same = std::equal
-        (
-            key.cbegin(), key.cend(), matrixKey_.cbegin(),
-            [](scalar a, scalar b)
-            {
-                return std::memcmp(&a, &b, sizeof(scalar)) == 0;
-            }
-        );
-    }
-    matrixKey_.transfer(key);
-    return returnReduce(same, andOp<bool>());
-}
-
-
 void Foam::coupledStepPETSc::start()
 {
     // The options as given, else the defaults (coupledSolver)
@@ -237,64 +141,9 @@ void Foam::coupledStepPETSc::solve
         return PetscInt((start0 + celli)*nb + k);
     };
 
-    // Rigid bodies' unknowns (coupledRigidRows): nbd a body, its
-    // velocity's solved components and its rotation about the axes that
-    // turn the solved plane, after every cell's, on the last rank
-    const label nBodies = rigid ? rigid->held.size() : 0;
-    labelList rotAxes;
-    if (nd == 3)
-    {
-        rotAxes = labelList({0, 1, 2});
-    }
-    else if (nd == 2)
-    {
-        forAll(mesh_.solutionD(), c)
-        {
-            if (mesh_.solutionD()[c] < 0) rotAxes.append(c);
-        }
-    }
-    const label nbd = nd + rotAxes.size();
-    const bool lastRank = Pstream::myProcNo() == Pstream::nProcs() - 1;
-    const PetscInt bodyStart = PetscInt(cellsG.size())*nb;
-    auto bodyRow = [&](label b, label j) -> PetscInt
-    {
-        return bodyStart + PetscInt(b*nbd + j);
-    };
-    // The rigid velocity's derivative at cell c in unknown j
-    auto dUR = [&](label c, label j) -> vector
-    {
-        vector e(Zero);
-        if (j < nd)
-        {
-            e[cmpts[j]] = 1;
-            return e;
-        }
-        e[rotAxes[j - nd]] = 1;
-        return e ^ rigid->r[c];
-    };
-    // Per body: its cells (over all ranks) and their penalty; a body
-    // without a penalty is held at its velocity (else its rows are empty)
-    labelList bodyCells(nBodies, Zero);
-    List<bool> bodyHeld(nBodies, false);
-    if (nBodies)
-    {
-        scalarList bodyCp(nBodies, Zero);
-        forAll(rigid->body, c)
-        {
-            const label bi = rigid->body[c];
-            if (bi < 0) continue;
-            ++bodyCells[bi];
-            bodyCp[bi] += rigid->cpV[c];
-        }
-        Pstream::listCombineGather(bodyCells, plusEqOp<label>());
-        Pstream::listCombineScatter(bodyCells);
-        Pstream::listCombineGather(bodyCp, plusEqOp<scalar>());
-        Pstream::listCombineScatter(bodyCp);
-        forAll(bodyHeld, bi)
-        {
-            bodyHeld[bi] = rigid->held[bi] || bodyCp[bi] <= VSMALL;
-        }
-    }
+    // Rigid bodies' unknowns (coupledRigidRows): after every cell's, on
+    // the last rank
+    const rigidBodyRows bodies(mesh_, rigid, cmpts, cellsG.size());
 
     // Global ids of the cells across coupled patches
     volScalarField ids
@@ -353,7 +202,7 @@ void Foam::coupledStepPETSc::solve
     // the right-hand side alone
     const bool keep = sameMatrix(UEqn, rho, muT, rigid);
     Mat A = nullptr;
-    const PetscInt nLocal = nC*nb + (lastRank ? nBodies*nbd : 0);
+    const PetscInt nLocal = nC*nb + bodies.nLocal();
     if (!keep)
     {
         // A row's cells: the cell and its face neighbours (and theirs
@@ -366,22 +215,15 @@ void Foam::coupledStepPETSc::solve
                 muT
               ? transposeRows::width(mesh_, muT->primitiveField(), i)
               : cells[i].size() + 1;
-            const label nr =
-                rigid && rigid->body[i] >= 0 ? nbd : 0;
             for (label k = 0; k < nb; ++k)
             {
-                nnz[i*nb + k] = nb*n + nr;
+                nnz[i*nb + k] = nb*n + bodies.cellWidth(i);
             }
         }
-        if (lastRank)
+        const labelList bw(bodies.widths());
+        forAll(bw, r)
         {
-            for (label bi = 0; bi < nBodies; ++bi)
-            {
-                for (label j = 0; j < nbd; ++j)
-                {
-                    nnz[nC*nb + bi*nbd + j] = nd*bodyCells[bi] + nbd;
-                }
-            }
+            nnz[nC*nb + r] = bw[r];
         }
         List<PetscInt> dnz(nLocal), onz(nLocal);
         forAll(nnz, r)
@@ -595,51 +437,8 @@ void Foam::coupledStepPETSc::solve
         addB(row(pRefCell, nd), c*p_rgh[pRefCell]);
     }
 
-    // The rigid bodies' rows and columns: a body's cell k row takes
-    // -cpV dUR_k/dx_j, a free body's row j sum_c cpV dUR_j . (U - U_R) = 0
-    // (its penalty's net force, or torque, on it), a held body's x_j = its
-    // given velocity
-    if (nBodies)
-    {
-        forAll(rigid->body, c)
-        {
-            const label bi = rigid->body[c];
-            if (bi < 0) continue;
-            const scalar cpV = rigid->cpV[c];
-            for (label j = 0; j < nbd; ++j)
-            {
-                const vector d(dUR(c, j));
-                for (label k = 0; k < nd; ++k)
-                {
-                    const scalar v = cpV*d[cmpts[k]];
-                    add(row(c, k), bodyRow(bi, j), -v);
-                    if (!bodyHeld[bi]) add(bodyRow(bi, j), row(c, k), v);
-                }
-                if (bodyHeld[bi]) continue;
-                for (label m = 0; m < nbd; ++m)
-                {
-                    add(bodyRow(bi, j), bodyRow(bi, m), -cpV*(d & dUR(c, m)));
-                }
-            }
-        }
-        if (lastRank)
-        {
-            for (label bi = 0; bi < nBodies; ++bi)
-            {
-                for (label j = 0; j < nbd; ++j)
-                {
-                    const scalar given = j < nd
-                      ? rigid->Ub[bi][cmpts[j]]
-                      : rigid->omega[bi][rotAxes[j - nd]];
-                    if (bodyHeld[bi])
-                    {
-                        add(bodyRow(bi, j), bodyRow(bi, j), 1);
-                        addB(bodyRow(bi, j), given);
-                    }
-                }
-            }
-        }
-    }
+    // The rigid bodies' rows and columns (rigidBodyRows)
+    bodies.add(A, b, start0);
 
     if (!keep)
     {
@@ -661,18 +460,7 @@ void Foam::coupledStepPETSc::solve
             }
             xa[i*nb + nd] = p_rgh[i];
         }
-        if (lastRank)
-        {
-            for (label bi = 0; bi < nBodies; ++bi)
-            {
-                for (label j = 0; j < nbd; ++j)
-                {
-                    xa[nC*nb + bi*nbd + j] = j < nd
-                      ? rigid->Ub[bi][cmpts[j]]
-                      : rigid->omega[bi][rotAxes[j - nd]];
-                }
-            }
-        }
+        bodies.guess(xa + nC*nb);
         VecRestoreArray(x, &xa);
     }
 
@@ -723,32 +511,7 @@ void Foam::coupledStepPETSc::solve
             }
             p_rgh[i] = xa[i*nb + nd];
         }
-        if (nBodies)
-        {
-            List<scalarField> xb(nBodies, scalarField(nbd, Zero));
-            if (lastRank)
-            {
-                forAll(xb, bi)
-                {
-                    forAll(xb[bi], j) xb[bi][j] = xa[nC*nb + bi*nbd + j];
-                }
-            }
-            forAll(xb, bi)
-            {
-                reduce(xb[bi], sumOp<scalarField>());
-                for (label j = 0; j < nbd; ++j)
-                {
-                    if (j < nd)
-                    {
-                        rigid->Ub[bi][cmpts[j]] = xb[bi][j];
-                    }
-                    else
-                    {
-                        rigid->omega[bi][rotAxes[j - nd]] = xb[bi][j];
-                    }
-                }
-            }
-        }
+        bodies.read(xa + nC*nb);
         VecRestoreArrayRead(x, &xa);
     }
     VecDestroy(&x);
