@@ -14,7 +14,6 @@
 #include "transposeRows.H"
 #include "rigidBodyRows.H"
 
-
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
 namespace
@@ -59,7 +58,6 @@ Foam::coupledStepPETSc::coupledStepPETSc
     mesh_(mesh),
     options_(options),
     started_(false),
-    lu_(false),
     A_(nullptr),
     ksp_(nullptr)
 {
@@ -82,13 +80,8 @@ Foam::coupledStepPETSc::~coupledStepPETSc()
 
 void Foam::coupledStepPETSc::start()
 {
-    // The options as given, else the defaults (coupledSolver)
-    if (options_.empty())
-    {
-        options_ = defaultOptions(mesh_);
-    }
-    lu_ = direct(options_);
-
+    // The options as coupledStep gives them: the case's, else
+    // coupledSolver::defaultOptions
     PetscBool initialised = PETSC_FALSE;
     PetscInitialized(&initialised);
     if (!initialised)

@@ -371,22 +371,12 @@ Foam::tmp<Foam::vectorField> Foam::rigidBodies::rigidField
     return tUR;
 }
 
+
 Foam::scalar Foam::rigidBodies::viscousNumber(const scalar dt) const
 {
-    const fvMesh& mesh = mixture_.rho().mesh();
-    const scalarField& V = mesh.V();
     const scalarField& mu = mixture_.mu().primitiveField();
     const scalarField& rho = mixture_.rho().primitiveField();
-    // A cell's width squared: V^(2/3), in 2D V over the empty direction's
-    // span
-    scalar depth = 0;
-    if (mesh.nSolutionD() == 2)
-    {
-        forAll(mesh.solutionD(), d)
-        {
-            if (mesh.solutionD()[d] < 0) depth = mesh.bounds().span()[d];
-        }
-    }
+    const bodyShapes& shapes = poses_.shapes();
     scalar vn = 0;
     for (const label i : materials_)
     {
@@ -394,9 +384,7 @@ Foam::scalar Foam::rigidBodies::viscousNumber(const scalar dt) const
         forAll(a, c)
         {
             if (a[c] <= 0 || a[c] >= 1) continue;
-            const scalar dx2 =
-                depth > 0 ? V[c]/depth : Foam::pow(V[c], 2.0/3.0);
-            vn = max(vn, mu[c]/rho[c]*dt/dx2);
+            vn = max(vn, mu[c]/rho[c]*dt/sqr(shapes.cellSize(c)));
         }
     }
     return returnReduce(vn, maxOp<scalar>());

@@ -73,6 +73,25 @@ void Foam::rigidBodies::solve
           : penalty*A[c];
     }
 
+    // Start from the last projection's rigid motion
+    List<vector> Ub, omega;
+    rigidMotion(U.primitiveField(), Ub, omega);
+    holdMotion(Ub, omega);
+
+    // The bodies' velocities solved with the flow, in one matrix (none
+    // of the fixed point's preconditioner below is needed)
+    if (coupledSolve && rigidRows)
+    {
+        const scalarField cpV(cp*V);
+        coupledRigidRows rows{body_, cpV, r_, held_, Ub, omega};
+        fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U));
+        coupledSolve(UEqnHeld, &rows);
+        penaltyForces(cp, rigidField(Ub, omega), U.primitiveField(), V);
+        Info<< "Rigid bodies: " << nBodies_
+            << " held in 1 solve with the flow" << endl;
+        return;
+    }
+
     // Each body's inertia over the step K0 (the time derivative's share
     // of A), in translation and rotation: the preconditioner's base
     scalarList KV;
@@ -115,30 +134,12 @@ void Foam::rigidBodies::solve
         }
     }
 
-    // Start from the last projection's rigid motion
-    List<vector> Ub, omega;
-    rigidMotion(U.primitiveField(), Ub, omega);
-    holdMotion(Ub, omega);
-
     volVectorField UR
     (
         IOobject("UR", mesh.time().timeName(), mesh),
         mesh,
         dimensionedVector(dimVelocity, Zero)
     );
-
-    // The bodies' velocities solved with the flow, in one matrix
-    if (coupledSolve && rigidRows)
-    {
-        const scalarField cpV(cp*V);
-        coupledRigidRows rows{body_, cpV, r_, held_, Ub, omega};
-        fvVectorMatrix UEqnHeld(UEqn + fvm::Sp(Cp, U));
-        coupledSolve(UEqnHeld, &rows);
-        penaltyForces(cp, rigidField(Ub, omega), U.primitiveField(), V);
-        Info<< "Rigid bodies: " << nBodies_
-            << " held in 1 solve with the flow" << endl;
-        return;
-    }
 
     // The penalty raises the matrix's residual normalisation by up to P,
     // and the body's net force is P times the held cells' small velocity
