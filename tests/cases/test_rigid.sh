@@ -140,20 +140,20 @@ check jefferyShape "$dmax < 0.01" "largest |D - 1/3| $dmax"
 # Galilean invariance (benchmarks/rigid/galilean.sh): a cylinder (D 0.1,
 # 10 cells across, Re 100) held in a stream started at 1 m/s and the same
 # cylinder moved at -1 m/s through still liquid, doubly periodic box: the
-# same flow from two frames.  The fixed one's Cd over 0.1 <= t <= 0.2 is
-# an impulsively started cylinder's (measured 1.445); KNOWN: the moving
-# one's drag is 3.5 % higher (bound 1 %; 6 % for KNOWN), in proportion to
-# the step (5.5 % and 2.9 % at 20 cells and Co 0.5, 0.25): the momentum is
-# predicted with the last step's pressure, which the body has left behind
-# (-0.85 % with two PIMPLE outer iterations)
+# same flow from two frames.  The fixed one's Cd over 0.2 <= t <= 0.4 is
+# an impulsively started cylinder's (measured 1.373); the moving one's
+# within 1 % of it (measured -0.62 %) with two PIMPLE outer iterations.
+# With one, the step convects with the last step's flux, which the moving
+# flow has left behind: first order in the step, +3.4 % at this Courant
+# number of 0.25 (docs/limitations.md)
 ga="$WORK/galilean"
 for m in fixed moving; do
-    bash "$VHE_ROOT/benchmarks/rigid/galilean.sh" "$ga.$m" 10 $m 0.2 \
+    VHE_PIMPLE="nOuterCorrectors 2;" \
+    bash "$VHE_ROOT/benchmarks/rigid/galilean.sh" "$ga.$m" 10 $m 0.4 \
         || fail "galilean${m}Run" "$ga.$m/log.vheFoam"
 done
-read -r cdF cdM < <(python3 "$VHE_ROOT/benchmarks/rigid/galilean.py" "$ga.fixed" "$ga.moving" 0.1 \
+read -r cdF cdM < <(python3 "$VHE_ROOT/benchmarks/rigid/galilean.py" "$ga.fixed" "$ga.moving" 0.2 \
     | awk '/^# mean/ {gsub(",", ""); print $9, $11}')
-check galileanFixedDrag "$cdF > 1.3 and $cdF < 1.6" "Cd of the fixed cylinder $cdF"
-checkKnown galileanDrag "abs($cdM/$cdF - 1) < 0.01" "abs($cdM/$cdF - 1) < 0.06" \
-    "Cd moving $cdM against fixed $cdF" "the one-pass step predicts with the pressure the body left behind, docs/limitations.md"
+check galileanFixedDrag "$cdF > 1.2 and $cdF < 1.45" "Cd of the fixed cylinder $cdF"
+check galileanDrag "abs($cdM/$cdF - 1) < 0.01" "Cd moving $cdM against fixed $cdF"
 finish

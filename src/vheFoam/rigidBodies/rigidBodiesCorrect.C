@@ -31,17 +31,20 @@ void Foam::rigidBodies::correct(volVectorField& U)
         poses_.setMotion(Ub, omega, Xm_, regions_);
     }
     // The force that holds each body: the penalty's in the held solve and
-    // the momentum this projection takes from its cells
-    const scalarField& rho = mixture_.rho().primitiveField();
+    // the momentum this projection takes from its cells, at the rate the
+    // time scheme gives a change of the new velocity (its coefficient of
+    // U^(n+1): rho/dt with Euler, 3 rho/(2 dt) with backward; with rho/dt
+    // a cylinder moved through still liquid felt 2.5 % to 8 % too little
+    // drag under backward at Courant numbers 0.25 to 0.06)
+    const scalarField Addt(fvm::ddt(mixture_.rho(), U)().A());
     const scalarField& V = mesh.V();
-    const scalar dt = mesh.time().deltaTValue();
     List<vector> Fc(nBodies_, Zero), Tc(nBodies_, Zero);
     forAll(body_, c)
     {
         const label b = body_[c];
         if (b < 0) continue;
         const vector du(w_[c]*(Ub[b] + (omega[b] ^ r_[c]) - u[c]));
-        const vector f(rho[c]*V[c]*du/dt);
+        const vector f(Addt[c]*V[c]*du);
         Fc[b] += f;
         Tc[b] += r_[c] ^ f;
         u[c] += du;
