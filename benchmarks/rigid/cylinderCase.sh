@@ -23,9 +23,14 @@ DICT
 }
 
 # cylinderSetup DIR: an empty case with the periodic channel's fvSchemes
+# (its time scheme VHE_DDT's if set in the environment, e.g.
+# VHE_DDT=backward)
 cylinderSetup() {
     rm -rf "$1"; mkdir -p "$1/0" "$1/constant" "$1/system"
     cp "$VHE_ROOT/tutorials/periodicChannel/template/system/fvSchemes" "$1/system/"
+    if [ -n "${VHE_DDT:-}" ]; then
+        sed -i "s/default Euler;/default $VHE_DDT;/" "$1/system/fvSchemes"
+    fi
 }
 
 # cylinderBox DIR LX LY NX NY DZ BOUNDARY: the blockMeshDict of the box

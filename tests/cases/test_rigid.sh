@@ -156,4 +156,15 @@ read -r cdF cdM < <(python3 "$VHE_ROOT/benchmarks/rigid/galilean.py" "$ga.fixed"
     | awk '/^# mean/ {gsub(",", ""); print $9, $11}')
 check galileanFixedDrag "$cdF > 1.2 and $cdF < 1.45" "Cd of the fixed cylinder $cdF"
 check galileanDrag "abs($cdM/$cdF - 1) < 0.01" "Cd moving $cdM against fixed $cdF"
+# The same under backward (BDF2): within 2 % (measured -1.54 %); when the
+# held body's force took the projection's share at
+# rho/dt, not the scheme's 3 rho/(2 dt), -3.8 %
+for m in fixed moving; do
+    VHE_DDT=backward VHE_PIMPLE="nOuterCorrectors 2;" \
+    bash "$VHE_ROOT/benchmarks/rigid/galilean.sh" "$ga.$m.backward" 10 $m 0.4 \
+        || fail "galilean${m}BackwardRun" "$ga.$m.backward/log.vheFoam"
+done
+read -r cdF cdM < <(python3 "$VHE_ROOT/benchmarks/rigid/galilean.py" "$ga.fixed.backward" "$ga.moving.backward" 0.2 \
+    | awk '/^# mean/ {gsub(",", ""); print $9, $11}')
+check galileanDragBackward "abs($cdM/$cdF - 1) < 0.02" "Cd moving $cdM against fixed $cdF"
 finish
