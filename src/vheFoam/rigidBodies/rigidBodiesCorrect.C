@@ -34,7 +34,7 @@ void Foam::rigidBodies::correct(volVectorField& U)
     // the momentum this projection takes from its cells, at the rate the
     // time scheme gives a change of the new velocity (its coefficient of
     // U^(n+1): rho/dt with Euler, 3 rho/(2 dt) with backward; with rho/dt
-    // a cylinder moved through still liquid felt 2.5 % to 8 % too little
+    // a cylinder moved through still liquid felt 2.4 % to 8.8 % too little
     // drag under backward at Courant numbers 0.25 to 0.06)
     const scalarField Addt(fvm::ddt(mixture_.rho(), U)().A());
     const scalarField& V = mesh.V();
