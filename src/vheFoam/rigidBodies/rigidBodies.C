@@ -372,6 +372,18 @@ Foam::tmp<Foam::vectorField> Foam::rigidBodies::rigidField
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::rigidBodies::timeCoefficient
+(
+    const volVectorField& U
+) const
+{
+    return tmp<scalarField>
+    (
+        new scalarField(fvm::ddt(mixture_.rho(), U)().A())
+    );
+}
+
+
 Foam::scalar Foam::rigidBodies::viscousNumber(const scalar dt) const
 {
     const scalarField& mu = mixture_.mu().primitiveField();

@@ -36,7 +36,7 @@ void Foam::rigidBodies::correct(volVectorField& U)
     // U^(n+1): rho/dt with Euler, 3 rho/(2 dt) with backward; with rho/dt
     // a cylinder moved through still liquid felt 2.4 % to 8.8 % too little
     // drag under backward at Courant numbers 0.25 to 0.06)
-    const scalarField Addt(fvm::ddt(mixture_.rho(), U)().A());
+    const scalarField Addt(timeCoefficient(U));
     const scalarField& V = mesh.V();
     List<vector> Fc(nBodies_, Zero), Tc(nBodies_, Zero);
     forAll(body_, c)

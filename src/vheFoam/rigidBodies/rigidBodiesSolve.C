@@ -64,7 +64,7 @@ void Foam::rigidBodies::solve
         dimensionedScalar(A.dimensions(), Zero)
     );
     scalarField& cp = Cp.primitiveFieldRef();
-    const scalarField Addt(fvm::ddt(mixture_.rho(), U)().A());
+    const scalarField Addt(timeCoefficient(U));
     forAll(body_, c)
     {
         if (body_[c] < 0) continue;
