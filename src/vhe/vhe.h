@@ -677,6 +677,35 @@ int vhe_share_meet(long nFaces, const int *own, const int *nei,
                    const double *a, const double *b, const double *aNei,
                    const double *bNei, double tol);
 
+/* ------------------------------------------------------------------- drain */
+
+/*
+ * The fluids of a drawn rigid body's edge cells (drain.c): each edge cell
+ * (lo <= held < 1, held the drawn bodies' sum, lo the fraction from which
+ * a cell moves wholly with its body) takes the fluid composition of its
+ * face neighbours outside (held < lo), each face
+ * exchanging 1/n of the difference (n = links, the cell's number of such
+ * faces), the outside cell giving each of its edge faces at most 1/links
+ * of each fluid it holds.  Faces as in the shares kernels (nei NULL: the
+ * neighbour's values per face).
+ *
+ * vhe_drain_links: links[c] += 1 for each edge-outside face of cell c.
+ * vhe_drain_faces: d[k][f] [m^3], the volume of fluid k (K of them, at
+ *   most VHE_DRAIN_MAX, fractions a[k] per cell) moving from the
+ *   neighbour into the owner across face f; sum_k d[k][f] = 0.  The
+ *   caller adds d/V to the owner and takes it from the neighbour.
+ */
+#define VHE_DRAIN_MAX 16
+void vhe_drain_links(long nFaces, const int *own, const int *nei,
+                     const double *held, const double *heldNei, double lo,
+                     double *links);
+void vhe_drain_faces(long nFaces, const int *own, const int *nei, int K,
+                     const double *const *a, const double *held,
+                     const double *V, const double *links,
+                     const double *const *aNei, const double *heldNei,
+                     const double *VNei, const double *linksNei, double lo,
+                     double *const *d);
+
 /* ---------------------------------------------------------------- compress */
 
 /*

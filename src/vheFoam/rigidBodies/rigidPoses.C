@@ -324,6 +324,7 @@ void Foam::rigidPoses::move(vheMixture& mixture)
     // the step collapsed)
     const scalarField rho0(mixture.rho().primitiveField());
     mixture.hold(phases_, fractions());
+    mixture.drainEdges(phases_);
     mixture.correct();
     const scalarField dRho(mixture.rho().primitiveField() - rho0);
     if (dRho_.size() != dRho.size()) dRho_ = scalarField(dRho.size(), Zero);

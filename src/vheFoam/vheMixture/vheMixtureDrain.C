@@ -1,0 +1,123 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: phase-averaged gas/liquid/solid mixture -- the fluids in a drawn
+  rigid body's edge cells take the composition of the fluid beside the
+  body (C core: drain.c)
+\*---------------------------------------------------------------------------*/
+
+#include "vheMixture.H"
+#include "syncTools.H"
+#include "vhe.h"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::vheMixture::drainEdges(const labelList& held)
+{
+    // Why: a drawn body's edge cells move wholly with it (their faces
+    // carry its rigid flux), so their fluids keep their mix wherever it
+    // goes, and a light box rising through a free surface floated on a
+    // row of water it brought up from depth (drain.c).  Each edge cell
+    // takes the fluid beside it, the difference exchanged with its
+    // outside face neighbours (over coupled faces too: both sides compute
+    // the same volumes)
+    DynamicList<label> fluids;
+    forAll(phases_, j)
+    {
+        if (!phases_[j].solid && !held.found(j)) fluids.append(j);
+    }
+    const label K = fluids.size();
+    if (K < 2) return;
+    if (K > VHE_DRAIN_MAX)
+    {
+        FatalErrorInFunction
+            << K << " fluids beside the drawn bodies: at most "
+            << VHE_DRAIN_MAX << exit(FatalError);
+    }
+    // A cell moves wholly with its body, its faces carrying the rigid
+    // flux, from a fraction of 1/40 (rigidBodies: weight min(1, 4 alpha)
+    // from 1/10); below it, its fluids move with the flow
+    const scalar lo = 0.025;
+
+    const label nCells = mesh_.nCells();
+    const label nInt = mesh_.nInternalFaces();
+    scalarField sumHeld(nCells, Zero);
+    for (const label k : held) sumHeld += alphas_[k].primitiveField();
+
+    // The coupled boundary faces: their cells and the other side's values
+    DynamicList<label> bFace, bCell;
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (!pp.coupled()) continue;
+        forAll(pp, i)
+        {
+            bFace.append(pp.start() - nInt + i);
+            bCell.append(pp.faceCells()[i]);
+        }
+    }
+    const label nB = bFace.size();
+    auto other = [&](const scalarField& cellValues)
+    {
+        scalarField all;
+        syncTools::swapBoundaryCellList(mesh_, cellValues, all);
+        return scalarField(all, bFace);
+    };
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField heldB(other(sumHeld));
+
+    scalarField links(nCells, Zero);
+    vhe_drain_links
+    (
+        nInt, own.cdata(), nei.cdata(), sumHeld.cdata(), nullptr, lo,
+        links.data()
+    );
+    vhe_drain_links
+    (
+        nB, bCell.cdata(), nullptr, sumHeld.cdata(), heldB.cdata(), lo,
+        links.data()
+    );
+    if (returnReduce(max(links), maxOp<scalar>()) <= 0) return;
+    const scalarField linksB(other(links));
+    const scalarField VB(other(mesh_.V()));
+
+    List<scalarField> aB(K);
+    List<const double*> a(K), aNei(K);
+    List<scalarField> dInt(K, scalarField(nInt)), dB(K, scalarField(nB));
+    List<double*> pInt(K), pB(K);
+    forAll(fluids, k)
+    {
+        aB[k] = other(alphas_[fluids[k]].primitiveField());
+        a[k] = alphas_[fluids[k]].primitiveField().cdata();
+        aNei[k] = aB[k].cdata();
+        pInt[k] = dInt[k].data();
+        pB[k] = dB[k].data();
+    }
+    vhe_drain_faces
+    (
+        nInt, own.cdata(), nei.cdata(), K, a.cdata(), sumHeld.cdata(),
+        mesh_.V().cdata(), links.cdata(), nullptr, nullptr, nullptr, nullptr,
+        lo, pInt.data()
+    );
+    vhe_drain_faces
+    (
+        nB, bCell.cdata(), nullptr, K, a.cdata(), sumHeld.cdata(),
+        mesh_.V().cdata(), links.cdata(), aNei.cdata(), heldB.cdata(),
+        VB.cdata(), linksB.cdata(), lo, pB.data()
+    );
+
+    // The volumes moved: into the owner, out of the neighbour
+    const scalarField& V = mesh_.V();
+    forAll(fluids, k)
+    {
+        scalarField& ak = alphas_[fluids[k]].primitiveFieldRef();
+        forAll(nei, f)
+        {
+            ak[own[f]] += dInt[k][f]/V[own[f]];
+            ak[nei[f]] -= dInt[k][f]/V[nei[f]];
+        }
+        forAll(bCell, i) ak[bCell[i]] += dB[k][i]/V[bCell[i]];
+        alphas_[fluids[k]].correctBoundaryConditions();
+    }
+}
+
+
+// ************************************************************************* //
