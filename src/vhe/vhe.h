@@ -680,31 +680,50 @@ int vhe_share_meet(long nFaces, const int *own, const int *nei,
 /* ------------------------------------------------------------------- drain */
 
 /*
- * The fluids of a drawn rigid body's edge cells (drain.c): each edge cell
- * (lo <= held < 1, held the drawn bodies' sum, lo the fraction from which
- * a cell moves wholly with its body) takes the fluid composition of its
- * face neighbours outside (held < lo), each face
- * exchanging 1/n of the difference (n = links, the cell's number of such
- * faces), the outside cell giving each of its edge faces at most 1/links
- * of each fluid it holds.  Faces as in the shares kernels (nei NULL: the
- * neighbour's values per face).
+ * The fluids of a drawn rigid body's edge cells (drain.c).  Edge cells:
+ * lo <= held < 1 (held the drawn bodies' sum, lo the fraction from which
+ * a cell moves wholly with its body); outside cells: held < lo.  A link
+ * is a face between an edge cell and an outside cell that holds fluid.
+ * K fluids (at most VHE_DRAIN_MAX), fractions a[k] per cell; a fluid's
+ * share s_k = a_k / sum_j a_j (negative fractions as 0).  Faces as in the
+ * shares kernels (nei NULL: the neighbour's values per face).
  *
- * vhe_drain_links: links[c] += 1 for each edge-outside face of cell c.
- * vhe_drain_faces: d[k][f] [m^3], the volume of fluid k (K of them, at
- *   most VHE_DRAIN_MAX, fractions a[k] per cell) moving from the
- *   neighbour into the owner across face f; sum_k d[k][f] = 0.  The
- *   caller adds d/V to the owner and takes it from the neighbour.
+ * vhe_drain_links: links[c] += 1 for each link of cell c (edge and
+ *   outside cells both).
+ * vhe_drain_range: over each edge cell's links, sum[k][c] += the outside
+ *   cell's share s_k, mn[k][c], mx[k][c] its least and largest (the
+ *   caller starts them at 0, 2 and -1).
+ * vhe_drain_lambda: lambda[c] in [0, 1], the least that brings every
+ *   share of s + lambda (m - s) into [mn, mx] (m = sum / links), 0 where
+ *   c gathered no range (not an edge cell).
+ * vhe_drain_faces: d[k][f] [m^3], the volume of fluid k moving from the
+ *   neighbour into the owner across face f, lambda/links of the edge
+ *   cell's difference to the outside cell's share (its fluids' volume
+ *   kept), the outside cell giving each link at most 1/links of each
+ *   fluid it holds; sum_k d[k][f] = 0.  The caller adds d/V to the owner
+ *   and takes it from the neighbour.
  */
 #define VHE_DRAIN_MAX 16
-void vhe_drain_links(long nFaces, const int *own, const int *nei,
-                     const double *held, const double *heldNei, double lo,
-                     double *links);
+void vhe_drain_links(long nFaces, const int *own, const int *nei, int K,
+                     const double *const *a, const double *held,
+                     const double *const *aNei, const double *heldNei,
+                     double lo, double *links);
+void vhe_drain_range(long nFaces, const int *own, const int *nei, int K,
+                     const double *const *a, const double *held,
+                     const double *const *aNei, const double *heldNei,
+                     double lo, double *const *sum, double *const *mn,
+                     double *const *mx);
+void vhe_drain_lambda(long n, int K, const double *const *a,
+                      const double *links, const double *const *sum,
+                      const double *const *mn, const double *const *mx,
+                      double *lambda);
 void vhe_drain_faces(long nFaces, const int *own, const int *nei, int K,
                      const double *const *a, const double *held,
                      const double *V, const double *links,
-                     const double *const *aNei, const double *heldNei,
-                     const double *VNei, const double *linksNei, double lo,
-                     double *const *d);
+                     const double *lambda, const double *const *aNei,
+                     const double *heldNei, const double *VNei,
+                     const double *linksNei, const double *lambdaNei,
+                     double lo, double *const *d);
 
 /* ---------------------------------------------------------------- compress */
 

@@ -18,7 +18,8 @@
 #    of G/rho_s = 10 is 0.7 % off), every phase volume conserved to 1e-6.
 #  - the same box a tenth of water's density, released 0.2 m deep: it
 #    rises through the surface and floats upright at Archimedes' draft
-#    within 1.5 % of its height (its edge cells take the fluid beside it),
+#    within 1 % of its height (its edge cells' fluids kept within the
+#    range of those beside it),
 #    and the same serial and on 2 ranks split at the surface.
 . "$(dirname "$0")/lib.sh"
 
@@ -85,14 +86,14 @@ check floatingVolumes "$drift < 1e-6" "largest relative phase volume drift $drif
 
 # A light rigid box (rho_s 100, a tenth of the water's), the same box
 # released 0.2 m under the surface: it rises through the surface and
-# floats, upright, at Archimedes' draft (0.0099 m, 0.4 cell) within 1.5 %
-# of its height over 35 <= t <= 40 (measured 0.00970 m, -0.21 %; -0.96 %
-# writing every second, where a side column of the box leaving the cells
-# that move with it jolted it at t = 37; +0.49 % at 80 cells).  Its edge cells take the fluid beside it
+# floats, upright, at Archimedes' draft (0.0099 m, 0.4 cell) within 1 % of
+# its height over 35 <= t <= 40 (measured 0.01027 m, +0.36 %; +0.28 %
+# written every second; +0.64 % at 80 cells, still rising by 2e-5 m/s).
+# Its edge cells' fluids are kept within the range of those beside it
 # (vheMixture::drainEdges): when they kept the fluids they had, the water
 # they brought up from depth rode on its top and it floated at 0.0166 m
 # (+6.7 %; 0.0183 m at 80 cells).  Tilted by at most 0.03 rad after t = 5
-# (measured 0.0034; 0.014 writing every second)
+# (measured 0.011)
 li="$WORK/light"
 sceneCase floatingBlock "$li" nx=40 ny=40 depthOil=0 depthWater=0.5 shape=box \
     blockWidth=0.3 blockHeight=0.1 nuWater=1e-2 writeInterval=5 \
@@ -102,7 +103,7 @@ cp -r "$li" "$li.start"
 run "$li" vheFoam || fail lightRun "$li/log.vheFoam"
 exact=$(python3 -c "print((100 - 1)/(1000 - 1)*0.1)")
 draft=$(python3 "$TESTS_DIR/floating.py" bodyDraft "$li" 0.1 35)
-check lightFloats "abs($draft - $exact) < 0.015*0.1" \
+check lightFloats "abs($draft - $exact) < 0.01*0.1" \
     "draft $draft m, Archimedes $exact m (height 0.1 m)"
 tilt=$(awk '!/^#/ && $1 >= 5 {a = $12 < 0 ? -$12 : $12; if (a > m) m = a} END {print m + 0}' \
     "$li/postProcessing/rigidBodies/0/poses.dat")
@@ -113,8 +114,11 @@ check lightVolumes "$drift < 1e-6" "largest relative phase volume drift $drift"
 # The light box serial and on 2 ranks split at y = 0.5, the free surface,
 # to t = 0.5 as its top breaks through it (tight solvers): the edge cells
 # exchange their fluids across processor faces as across internal ones
-# (both sides compute the same volumes): the box's centre agrees to 2e-6 m
-# (measured 2.8e-7; 7.5e-8 without the exchange; 2.9e-4 when cells the
+# (both sides compute the same volumes).  The breach amplifies round-off
+# ten-thousandfold (the symmetric box's tilt grows from 5e-11 to 6e-7 rad
+# at t = 0.4; the serial run with its cells renumbered parts from it by
+# 1.5e-6 m), so the box's centre agrees to 2e-5 m, 8e-4 of a cell
+# (measured 3.2e-6; 7.5e-8 without the exchange; 2.9e-4 when cells the
 # box reached by 1e-6 took part)
 for v in serial parallel; do
     cp -r "$li.start" "$li.$v"
@@ -127,7 +131,7 @@ run "$li.serial" vheFoam || fail lightSerialRun "$li.serial/log.vheFoam"
 (run "$li.parallel" decomposePar && cd "$li.parallel" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1) \
     || fail lightParallelRun "$li.parallel/log.vheFoam"
 d=$(poseDiff "$li.serial" "$li.parallel")
-check lightParallel "$d < 2e-6" "largest difference of the box's centre, serial against 2 ranks, $d m"
+check lightParallel "$d < 2e-5" "largest difference of the box's centre, serial against 2 ranks, $d m"
 
 # A free disk (r 2 mm, rho 1500) dropped in water onto a fixed one (r 3 mm,
 # motion fixed, just off its axis), both placed by setBodies (the tank of

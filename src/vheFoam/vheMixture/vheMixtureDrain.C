@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
   vheFoam: phase-averaged gas/liquid/solid mixture -- the fluids in a drawn
-  rigid body's edge cells take the composition of the fluid beside the
+  rigid body's edge cells kept within the range of the fluids beside the
   body (C core: drain.c)
 \*---------------------------------------------------------------------------*/
 
@@ -15,10 +15,11 @@ void Foam::vheMixture::drainEdges(const labelList& held)
     // Why: a drawn body's edge cells move wholly with it (their faces
     // carry its rigid flux), so their fluids keep their mix wherever it
     // goes, and a light box rising through a free surface floated on a
-    // row of water it brought up from depth (drain.c).  Each edge cell
-    // takes the fluid beside it, the difference exchanged with its
-    // outside face neighbours (over coupled faces too: both sides compute
-    // the same volumes)
+    // row of water it brought up from depth (drain.c).  An edge cell
+    // whose fluids lie outside the range of those beside it is brought
+    // into that range, the difference exchanged with its outside face
+    // neighbours (over coupled faces too: both sides compute the same
+    // volumes)
     DynamicList<label> fluids;
     forAll(phases_, j)
     {
@@ -64,44 +65,80 @@ void Foam::vheMixture::drainEdges(const labelList& held)
     const labelUList& nei = mesh_.neighbour();
     const scalarField heldB(other(sumHeld));
 
-    scalarField links(nCells, Zero);
-    vhe_drain_links
-    (
-        nInt, own.cdata(), nei.cdata(), sumHeld.cdata(), nullptr, lo,
-        links.data()
-    );
-    vhe_drain_links
-    (
-        nB, bCell.cdata(), nullptr, sumHeld.cdata(), heldB.cdata(), lo,
-        links.data()
-    );
-    if (returnReduce(max(links), maxOp<scalar>()) <= 0) return;
-    const scalarField linksB(other(links));
-    const scalarField VB(other(mesh_.V()));
-
+    // The fluids' fractions, here and across coupled faces
     List<scalarField> aB(K);
     List<const double*> a(K), aNei(K);
-    List<scalarField> dInt(K, scalarField(nInt)), dB(K, scalarField(nB));
-    List<double*> pInt(K), pB(K);
     forAll(fluids, k)
     {
         aB[k] = other(alphas_[fluids[k]].primitiveField());
         a[k] = alphas_[fluids[k]].primitiveField().cdata();
         aNei[k] = aB[k].cdata();
+    }
+    const int* bC = bCell.cdata();
+
+    scalarField links(nCells, Zero);
+    vhe_drain_links
+    (
+        nInt, own.cdata(), nei.cdata(), K, a.cdata(), sumHeld.cdata(),
+        nullptr, nullptr, lo, links.data()
+    );
+    vhe_drain_links
+    (
+        nB, bC, nullptr, K, a.cdata(), sumHeld.cdata(), aNei.cdata(),
+        heldB.cdata(), lo, links.data()
+    );
+    if (returnReduce(max(links), maxOp<scalar>()) <= 0) return;
+
+    // How far each edge cell moves towards the fluids beside it
+    List<scalarField> sum(K, scalarField(nCells, Zero));
+    List<scalarField> mn(K, scalarField(nCells, 2.0));
+    List<scalarField> mx(K, scalarField(nCells, -1.0));
+    List<double*> pSum(K), pMn(K), pMx(K);
+    forAll(fluids, k)
+    {
+        pSum[k] = sum[k].data();
+        pMn[k] = mn[k].data();
+        pMx[k] = mx[k].data();
+    }
+    vhe_drain_range
+    (
+        nInt, own.cdata(), nei.cdata(), K, a.cdata(), sumHeld.cdata(),
+        nullptr, nullptr, lo, pSum.data(), pMn.data(), pMx.data()
+    );
+    vhe_drain_range
+    (
+        nB, bC, nullptr, K, a.cdata(), sumHeld.cdata(), aNei.cdata(),
+        heldB.cdata(), lo, pSum.data(), pMn.data(), pMx.data()
+    );
+    scalarField lambda(nCells, Zero);
+    vhe_drain_lambda
+    (
+        nCells, K, a.cdata(), links.cdata(), pSum.cdata(), pMn.cdata(),
+        pMx.cdata(), lambda.data()
+    );
+
+    // The exchanges, each computed alike on both sides of a coupled face
+    const scalarField linksB(other(links));
+    const scalarField lambdaB(other(lambda));
+    const scalarField VB(other(mesh_.V()));
+    List<scalarField> dInt(K, scalarField(nInt)), dB(K, scalarField(nB));
+    List<double*> pInt(K), pB(K);
+    forAll(fluids, k)
+    {
         pInt[k] = dInt[k].data();
         pB[k] = dB[k].data();
     }
     vhe_drain_faces
     (
         nInt, own.cdata(), nei.cdata(), K, a.cdata(), sumHeld.cdata(),
-        mesh_.V().cdata(), links.cdata(), nullptr, nullptr, nullptr, nullptr,
-        lo, pInt.data()
+        mesh_.V().cdata(), links.cdata(), lambda.cdata(), nullptr, nullptr,
+        nullptr, nullptr, nullptr, lo, pInt.data()
     );
     vhe_drain_faces
     (
-        nB, bCell.cdata(), nullptr, K, a.cdata(), sumHeld.cdata(),
-        mesh_.V().cdata(), links.cdata(), aNei.cdata(), heldB.cdata(),
-        VB.cdata(), linksB.cdata(), lo, pB.data()
+        nB, bC, nullptr, K, a.cdata(), sumHeld.cdata(), mesh_.V().cdata(),
+        links.cdata(), lambda.cdata(), aNei.cdata(), heldB.cdata(),
+        VB.cdata(), linksB.cdata(), lambdaB.cdata(), lo, pB.data()
     );
 
     // The volumes moved: into the owner, out of the neighbour
