@@ -34,6 +34,9 @@ Foam::vheMixture::vheMixture
     nSolids_(0),
     nRigid_(0),
     alphas_(),
+    fixedAlphas_(),
+    fixedDRho_(),
+    fixedStep_(-1),
     rho_
     (
         IOobject("rho", mesh_.time().timeName(), mesh_,

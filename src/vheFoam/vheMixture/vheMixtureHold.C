@@ -26,7 +26,28 @@ void Foam::vheMixture::holdFixed()
         held.append(i);
         values.append(fixedAlphas_[i].primitiveField());
     }
-    if (held.size()) hold(held, values);
+    if (held.empty()) return;
+
+    // The density the transport's mass flux carried, then the change the
+    // hold made, which no flux carried: a mass source at the cell's old
+    // velocity (addToOldDensity), as for the drawn bodies.  (Without it
+    // the air over a fixed box that a dam-break wave struck took the
+    // momentum of the water the hold moved: its velocity doubled every
+    // step and the run stopped at t = 0.19.)  Every outer iteration
+    // transports from the step's start: the old density takes the
+    // difference to what it was given
+    const scalarField rho0(rho_.primitiveField());
+    hold(held, values);
+    drainEdges(held);
+    correct();
+    const scalarField dRho(rho_.primitiveField() - rho0);
+    if (fixedStep_ != mesh_.time().timeIndex() || fixedDRho_.size() != dRho.size())
+    {
+        fixedStep_ = mesh_.time().timeIndex();
+        fixedDRho_ = scalarField(dRho.size(), Zero);
+    }
+    addToOldDensity(dRho - fixedDRho_);
+    fixedDRho_ = dRho;
 }
 
 

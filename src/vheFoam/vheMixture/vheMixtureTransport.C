@@ -312,8 +312,8 @@ void Foam::vheMixture::solve()
         rhoPhi_ = rhoPhiSum;
     }
 
-    holdFixed();
     correct();
+    holdFixed();
     report();
 }
 
