@@ -20,7 +20,8 @@
 #    rises through the surface and floats upright at Archimedes' draft
 #    within 1 % of its height (its edge cells' fluids kept within the
 #    range of those beside it),
-#    and the same serial and on 2 ranks split at the surface.
+#    and the same serial and on 2 ranks split at the surface;
+#  - a dam-break wave over a rigid box held fixed runs to its end.
 . "$(dirname "$0")/lib.sh"
 
 dat=postProcessing/bodies/0/bodies.dat
