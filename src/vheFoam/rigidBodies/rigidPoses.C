@@ -322,14 +322,7 @@ void Foam::rigidPoses::move(vheMixture& mixture)
     // mass source at the old velocity (a wood body leaving a cell of air
     // left its momentum in the air, whose velocity jumped 600-fold, and
     // the step collapsed)
-    const scalarField rho0(mixture.rho().primitiveField());
-    mixture.hold(phases_, fractions());
-    mixture.drainEdges(phases_);
-    mixture.correct();
-    const scalarField dRho(mixture.rho().primitiveField() - rho0);
-    if (dRho_.size() != dRho.size()) dRho_ = scalarField(dRho.size(), Zero);
-    mixture.addToOldDensity(dRho - dRho_);
-    dRho_ = dRho;
+    mixture.holdAsSource(phases_, fractions(), dRho_);
 }
 
 

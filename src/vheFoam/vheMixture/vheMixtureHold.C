@@ -28,26 +28,37 @@ void Foam::vheMixture::holdFixed()
     }
     if (held.empty()) return;
 
-    // The density the transport's mass flux carried, then the change the
-    // hold made, which no flux carried: a mass source at the cell's old
-    // velocity (addToOldDensity), as for the drawn bodies.  (Without it
+    // The hold's density change, which no flux carried, is a mass source
+    // at the cell's old velocity, as for the drawn bodies.  (Without it
     // the air over a fixed box that a dam-break wave struck took the
     // momentum of the water the hold moved: its velocity doubled every
-    // step and the run stopped at t = 0.19.)  Every outer iteration
-    // transports from the step's start: the old density takes the
-    // difference to what it was given
+    // step and the run stopped at t = 0.19.)
+    if (fixedStep_ != mesh_.time().timeIndex())
+    {
+        fixedStep_ = mesh_.time().timeIndex();
+        fixedDRho_.clear();
+    }
+    holdAsSource(held, values, fixedDRho_);
+}
+
+
+void Foam::vheMixture::holdAsSource
+(
+    const labelList& held,
+    const UList<scalarField>& values,
+    scalarField& given
+)
+{
+    // Every outer iteration holds from the step's start: the old density
+    // takes the difference to what it was given
     const scalarField rho0(rho_.primitiveField());
     hold(held, values);
     drainEdges(held);
     correct();
     const scalarField dRho(rho_.primitiveField() - rho0);
-    if (fixedStep_ != mesh_.time().timeIndex() || fixedDRho_.size() != dRho.size())
-    {
-        fixedStep_ = mesh_.time().timeIndex();
-        fixedDRho_ = scalarField(dRho.size(), Zero);
-    }
-    addToOldDensity(dRho - fixedDRho_);
-    fixedDRho_ = dRho;
+    if (given.size() != dRho.size()) given = scalarField(dRho.size(), Zero);
+    addToOldDensity(dRho - given);
+    given = dRho;
 }
 
 
