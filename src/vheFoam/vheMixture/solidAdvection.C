@@ -77,7 +77,7 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
 (
     volScalarField& alpha,
     const surfaceScalarField& phi,
-    const volVectorField& U
+    const interpolationCellPoint<vector>& UInterp
 )
 {
     addProfiling(iso, "vheMixture::isoAdvection");
@@ -107,7 +107,6 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     scalarField fp(mesh.nPoints());
     const interfacePlanes planes(alpha, fp, surfCellTol, isoFaceTol, nRDF);
     isoCutFace cutFace(mesh, fp);
-    interpolationCellPoint<vector> UInterp(U);
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
     List<unsigned char> surface(a.size(), static_cast<unsigned char>(0));
     forAll(a, c)

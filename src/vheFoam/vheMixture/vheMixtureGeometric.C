@@ -305,9 +305,16 @@ void Foam::vheMixture::solveGeometric
         mesh_,
         dimensionedScalar(phi_.dimensions(), Zero)
     );
-    for (const label i : solidList)
+    if (solidList.size())
     {
-        alphaPhis.set(i, solidAdvection::advect(t.fields[i], phi_, U_).ptr());
+        const interpolationCellPoint<vector> UInterp(U_);
+        for (const label i : solidList)
+        {
+            alphaPhis.set
+            (
+                i, solidAdvection::advect(t.fields[i], phi_, UInterp).ptr()
+            );
+        }
     }
 
     // isoAdvector's bounding leaves fractions a little outside [0, 1], and
