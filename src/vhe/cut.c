@@ -49,68 +49,92 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
     double vol3 = 0.0;                  /* 3 x volume, about x0 */
     double seg[VHE_CUT_MAXSEG][2][3];   /* the cut's edge segments */
     int nseg = 0, nsub = 0, k;
-    const double *x0 = cell->x0;
+    const double *x0 = cell->x0, *X = cell->x;
 
-    memset(out, 0, sizeof *out);
     out->iso = iso;
+    out->volume = 0.0;
+    for (k = 0; k < 3; ++k) {
+        out->area[k] = 0.0;
+        out->centre[k] = 0.0;
+    }
     for (k = 0; k < cell->nfaces; ++k) {
         const int s = cell->face_start[k], n = cell->face_start[k + 1] - s;
-        double poly[VHE_CUT_MAXP][3], mean[3] = {0.0, 0.0, 0.0};
-        int np = 0, ncut = 0, nin = 0, i, j;
-        double cuts[VHE_CUT_MAXP][3];
+        double poly[VHE_CUT_MAXP][3], cuts[VHE_CUT_MAXP][3], d[VHE_CUT_MAXP / 2];
+        double mean[3] = {0.0, 0.0, 0.0}, S[3] = {0.0, 0.0, 0.0}, e0[3], r;
+        int idx[VHE_CUT_MAXP / 2], np = 0, ncut = 0, nin = 0, i, j;
 
         if (n > VHE_CUT_MAXP / 2) {
             return -1;
         }
+        /* the face's points in outward order, and f - iso at them */
         for (i = 0; i < n; ++i) {
-            /* the face's points in outward order */
-            const int a = cell->face_pts[s + (cell->flip[k] ? n - 1 - i : i)];
-            const int b = cell->face_pts[s + (cell->flip[k] ? (2 * n - 2 - i) % n
-                                                            : (i + 1) % n)];
-            const double fa = f[a] - iso, fb = f[b] - iso;
-            if (fa > 0.0) {
-                memcpy(poly[np++], &cell->x[3 * a], 3 * sizeof(double));
-                ++nin;
-            }
-            if ((fa > 0.0) != (fb > 0.0)) {
-                const double t = fa / (fa - fb);
-                for (j = 0; j < 3; ++j) {
-                    poly[np][j] = cell->x[3 * a + j]
-                                + t * (cell->x[3 * b + j] - cell->x[3 * a + j]);
-                }
-                memcpy(cuts[ncut++], poly[np], 3 * sizeof(double));
-                ++np;
-            }
+            idx[i] = cell->face_pts[s + (cell->flip[k] ? n - 1 - i : i)];
+            d[i] = f[idx[i]] - iso;
+            nin += d[i] > 0.0;
         }
         if (nin == 0) {
             continue;
         }
         ++nsub;
-        /* the submerged part's fan about its mean point */
-        for (i = 0; i < np; ++i) {
-            for (j = 0; j < 3; ++j) {
-                mean[j] += poly[i][j] / np;
+        for (i = 0; i < n; ++i) {
+            const int b = i + 1 < n ? i + 1 : 0;
+            const double *xa = &X[3 * idx[i]];
+            if (d[i] > 0.0) {
+                poly[np][0] = xa[0];
+                poly[np][1] = xa[1];
+                poly[np][2] = xa[2];
+                ++np;
+            }
+            if ((d[i] > 0.0) != (d[b] > 0.0)) {
+                const double t = d[i] / (d[i] - d[b]);
+                const double *xb = &X[3 * idx[b]];
+                for (j = 0; j < 3; ++j) {
+                    poly[np][j] = cuts[ncut][j] = xa[j] + t * (xb[j] - xa[j]);
+                }
+                ++ncut;
+                ++np;
             }
         }
-        for (i = 0; i < np; ++i) {
-            double e1[3], e2[3], St[3], ct[3];
-            sub3(poly[i], mean, e1);
-            sub3(poly[(i + 1) % np], mean, e2);
-            cross3(e1, e2, St);
-            for (j = 0; j < 3; ++j) {
-                St[j] *= 0.5;
-                ct[j] = (poly[i][j] + poly[(i + 1) % np][j] + mean[j]) / 3.0
-                      - x0[j];
-                S_sub[j] += St[j];
+        /* the submerged part's fan of triangles about its mean point m:
+         * area vector S = sum (p_i - m) x (p_i+1 - m)/2, and, the
+         * triangles' centres being m + (p_i - m + p_i+1 - m)/3 whose
+         * second part is normal to the triangle's area, (m - x0).S for
+         * its share of 3 x the volume */
+        {
+            /* (scalars: sums kept in arrays stall on their own stores) */
+            double mx = 0.0, my = 0.0, mz = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
+            double ax, ay, az;
+            r = 1.0 / np;
+            for (i = 0; i < np; ++i) {
+                mx += poly[i][0];
+                my += poly[i][1];
+                mz += poly[i][2];
             }
-            vol3 += dot3(ct, St);
+            mx *= r; my *= r; mz *= r;
+            ax = poly[0][0] - mx; ay = poly[0][1] - my; az = poly[0][2] - mz;
+            e0[0] = ax; e0[1] = ay; e0[2] = az;
+            for (i = 1; i <= np; ++i) {
+                double bx, by, bz;
+                if (i < np) {
+                    bx = poly[i][0] - mx; by = poly[i][1] - my; bz = poly[i][2] - mz;
+                } else {
+                    bx = e0[0]; by = e0[1]; bz = e0[2];
+                }
+                sx += ay * bz - az * by;
+                sy += az * bx - ax * bz;
+                sz += ax * by - ay * bx;
+                ax = bx; ay = by; az = bz;
+            }
+            S[0] = 0.5 * sx; S[1] = 0.5 * sy; S[2] = 0.5 * sz;
+            S_sub[0] += S[0]; S_sub[1] += S[1]; S_sub[2] += S[2];
+            mean[0] = mx - x0[0]; mean[1] = my - x0[1]; mean[2] = mz - x0[2];
         }
+        vol3 += dot3(mean, S);
         /* its cut points pair up into the cut's edge segments: from where
          * the walk leaves the submerged part to where it comes back (the
          * walk starts at the face's first point, inside or not) */
         {
-            const int first = cell->face_pts[s + (cell->flip[k] ? n - 1 : 0)];
-            const int shift = f[first] - iso > 0.0 ? 0 : 1;
+            const int shift = d[0] > 0.0 ? 0 : 1;
             for (i = 0; i + 1 < ncut; i += 2) {
                 if (nseg == VHE_CUT_MAXSEG) {
                     return -1;
@@ -150,10 +174,11 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
         double mean[3] = {0.0, 0.0, 0.0}, sumA = 0.0, sumAc[3] = {0.0, 0.0, 0.0};
         double nhat[3], ciso[3];
         const double m = sqrt(dot3(out->area, out->area));
+        const double h = 0.5 / nseg;
         int i, j;
         for (i = 0; i < nseg; ++i) {
             for (j = 0; j < 3; ++j) {
-                mean[j] += (seg[i][0][j] + seg[i][1][j]) / (2.0 * nseg);
+                mean[j] += (seg[i][0][j] + seg[i][1][j]) * h;
             }
         }
         for (j = 0; j < 3; ++j) {
@@ -167,11 +192,11 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
             a = fabs(dot3(n, nhat));
             sumA += a;
             for (j = 0; j < 3; ++j) {
-                sumAc[j] += a * (seg[i][0][j] + seg[i][1][j] + mean[j]) / 3.0;
+                sumAc[j] += a * (seg[i][0][j] + seg[i][1][j] + mean[j]);
             }
         }
         for (j = 0; j < 3; ++j) {
-            out->centre[j] = sumA > 0.0 ? sumAc[j] / sumA : mean[j];
+            out->centre[j] = sumA > 0.0 ? sumAc[j] / (3.0 * sumA) : mean[j];
             ciso[j] = out->centre[j] - x0[j];
         }
         vol3 += dot3(ciso, out->area);
