@@ -866,6 +866,22 @@ int vhe_cell_cut_fraction(const struct vhe_cell *cell, const double *f,
                           double V, double alpha, double tol, double g,
                           double guess, struct vhe_cut *out);
 
+/* ---- The volume a moving plane carries through a face (sweep.c) --------
+ *
+ * vhe_face_sweep: a face of n points x (3 per point, in order round it),
+ * the fluid behind the plane through x0 of unit normal nrm, (x - x0).nrm
+ * < 0, the plane moving along nrm at Un [m/s].  Returns the volume that
+ * crosses the face over dt with the face flux phi [m^3/s] (face area magSf):
+ * phi/magSf times the integral over [0, dt] of the face's area where
+ * (x - x0).nrm < Un t (isoAdvector's time-integrated face flux; exact for
+ * a plane face: two-point Gauss between the times the plane reaches the
+ * face's points).  |Un| <= Untol: the plane at rest.  0 for a face of
+ * fewer than 3 or more than 32 points.
+ */
+double vhe_face_sweep(int n, const double *x, const double x0[3],
+                      const double nrm[3], double Un, double dt,
+                      double phi, double magSf, double Untol);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1409,6 +1409,7 @@ Suite *anderson_suite(void); /* test_anderson.c */
 Suite *bound_suite(void); /* test_bound.c */
 Suite *cut_suite(void); /* test_cut.c */
 Suite *drain_suite(void); /* test_drain.c */
+Suite *sweep_suite(void); /* test_sweep.c */
 
 int main(void)
 {
@@ -1429,6 +1430,7 @@ int main(void)
     srunner_add_suite(sr, bound_suite());
     srunner_add_suite(sr, cut_suite());
     srunner_add_suite(sr, drain_suite());
+    srunner_add_suite(sr, sweep_suite());
     srunner_run_all(sr, CK_NORMAL);
     nf = srunner_ntests_failed(sr);
     srunner_free(sr);

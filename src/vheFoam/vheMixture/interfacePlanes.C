@@ -216,8 +216,6 @@ void Foam::interfacePlanes::cutPlanes
         }
         normal_[i] = n[i];
         centre_[i] = point(out.centre[0], out.centre[1], out.centre[2]);
-        isoValue_[i] = out.iso;
-        planar_[i] = true;
     }
 }
 
@@ -227,14 +225,12 @@ void Foam::interfacePlanes::cutPlanes
 Foam::interfacePlanes::interfacePlanes
 (
     const volScalarField& alpha,
-    scalarField& pointValues,
     const scalar surfTol,
     const scalar isoTol,
     const label nRDF
 )
 :
-    mesh_(alpha.mesh()),
-    pointValues_(pointValues)
+    mesh_(alpha.mesh())
 {
     const scalarField& a = alpha.primitiveField();
 
@@ -243,12 +239,11 @@ Foam::interfacePlanes::interfacePlanes
     //    translated disk 1.6 to 1.9 times further from exact)
     {
         addProfiling(iso, "interfacePlanes::isoSurface");
-        pointScalarField ap
+        const pointScalarField ap
         (
             volPointInterpolation::New(mesh_).interpolate(alpha)
         );
-        interpolated_.transfer(ap.primitiveFieldRef());
-        pointValues_ = interpolated_;
+        const scalarField& interpolated = ap.primitiveField();
         vhe_cut out;
         forAll(a, c)
         {
@@ -257,7 +252,7 @@ Foam::interfacePlanes::interfacePlanes
             fCell_.setSize(cp.size());
             forAll(cp, j)
             {
-                fCell_[j] = interpolated_[cp[j]];
+                fCell_[j] = interpolated[cp[j]];
             }
             if (!cutCell(c, a[c], isoTol, 0, 0, out)) continue;
             const vector A(out.area[0], out.area[1], out.area[2]);
@@ -265,8 +260,6 @@ Foam::interfacePlanes::interfacePlanes
             cells_.append(c);
             normal_.append(A/mag(A));
             centre_.append(point(out.centre[0], out.centre[1], out.centre[2]));
-            isoValue_.append(out.iso);
-            planar_.append(false);
         }
     }
 
@@ -279,29 +272,6 @@ Foam::interfacePlanes::interfacePlanes
             rdfNormals(n);
         }
         cutPlanes(a, n, isoTol);
-    }
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::interfacePlanes::setPointValues(const label i) const
-{
-    const label c = cells_[i];
-    const labelList& cp = mesh_.cellPoints()[c];
-    if (planar_[i])
-    {
-        fCell_.setSize(cp.size());
-        planeValues(c, normal_[i], fCell_);
-        forAll(cp, j)
-        {
-            pointValues_[cp[j]] = fCell_[j];
-        }
-        return;
-    }
-    for (const label p : cp)
-    {
-        pointValues_[p] = interpolated_[p];
     }
 }
 

@@ -5,7 +5,6 @@
 #include "solidAdvection.H"
 #include "cellFaceRows.H"
 #include "interfacePlanes.H"
-#include "isoCutFace.H"
 #include "upwind.H"
 #include "syncTools.H"
 #include "fvc.H"
@@ -104,20 +103,41 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     const scalarField& phii = phi.primitiveField();
     const scalarField& magSf = mesh.magSf().primitiveField();
 
-    scalarField fp(mesh.nPoints());
-    const interfacePlanes planes(alpha, fp, surfCellTol, isoFaceTol, nRDF);
-    isoCutFace cutFace(mesh, fp);
+    const interfacePlanes planes(alpha, surfCellTol, isoFaceTol, nRDF);
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const pointField& pts = mesh.points();
     List<unsigned char> surface(a.size(), static_cast<unsigned char>(0));
     forAll(a, c)
     {
         surface[c] = a[c] > surfCellTol && a[c] < 1 - surfCellTol;
     }
+    // The volume the cell's plane, moving with the velocity at its centre,
+    // carries through a downwind face over the step (C core)
+    List<scalar> fx;
+    auto sweep = [&]
+    (
+        const label f, const point& x0, const vector& n0, const scalar Un0,
+        const scalar phif, const scalar magSff
+    )
+    {
+        const face& fc = mesh.faces()[f];
+        fx.setSize(3*fc.size());
+        forAll(fc, j)
+        {
+            const point& p = pts[fc[j]];
+            fx[3*j] = p.x();
+            fx[3*j + 1] = p.y();
+            fx[3*j + 2] = p.z();
+        }
+        return vhe_face_sweep
+        (
+            fc.size(), fx.cdata(), x0.cdata(), n0.cdata(), Un0, dt, phif,
+            magSff, 10*SMALL
+        );
+    };
     forAll(planes.cells(), pi)
     {
         const label c = planes.cells()[pi];
-        planes.setPointValues(pi);
-        const scalar f0 = planes.isoValue()[pi];
         const point& x0 = planes.centre()[pi];
         const vector& n0 = planes.normal()[pi];
         const scalar Un0 = UInterp.interpolate(x0, c) & n0;
@@ -128,10 +148,7 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
             {
                 const scalar out = own[f] == c ? phii[f] : -phii[f];
                 if (out <= 10*SMALL) continue;
-                dVfi[f] = cutFace.timeIntegratedFaceFlux
-                (
-                    f, x0, n0, Un0, f0, dt, phii[f], magSf[f]
-                );
+                dVfi[f] = sweep(f, x0, n0, Un0, phii[f], magSf[f]);
                 continue;
             }
             const label patchi = patches.whichPatch(f);
@@ -139,9 +156,9 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
             if (phip.empty()) continue;
             const label i = f - patches[patchi].start();
             if (phip[i] <= 10*SMALL) continue;
-            dVf.boundaryFieldRef()[patchi][i] = cutFace.timeIntegratedFaceFlux
+            dVf.boundaryFieldRef()[patchi][i] = sweep
             (
-                f, x0, n0, Un0, f0, dt, phip[i],
+                f, x0, n0, Un0, phip[i],
                 mesh.magSf().boundaryField()[patchi][i]
             );
         }
