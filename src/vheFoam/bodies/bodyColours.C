@@ -5,6 +5,7 @@
 #include "bodyColours.H"
 #include "volFields.H"
 #include "syncTools.H"
+#include "processorPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -14,8 +15,18 @@ Foam::bodyColours::bodyColours(vheMixture& mixture)
     materials_(),
     regions_(mixture.rho().mesh(), 0.5),
     warned_(false),
-    travelled_(maxTravel)
+    travelled_(maxTravel),
+    wait_(maxTravel),
+    h_(0),
+    periodic_(false)
 {
+    const fvMesh& mesh = mixture.rho().mesh();
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        periodic_ = periodic_ || (pp.coupled() && !isA<processorPolyPatch>(pp));
+    }
+    reduce(periodic_, orOp<bool>());
+
     const List<vheMixture::phase>& ph = mixture_.phases();
     DynamicList<labelList> groups;
     forAll(ph, i)
@@ -73,7 +84,51 @@ Foam::labelList Foam::bodyColours::grow(const labelList& lab) const
 }
 
 
-void Foam::bodyColours::correct(const labelList& phases)
+Foam::scalar Foam::bodyColours::nextWait
+(
+    const labelList& near,
+    const label nB
+) const
+{
+    if (periodic_ || nB < 2) return nB < 2 ? maxWait : maxTravel;
+    const vectorField& C = mixture_.rho().mesh().C().primitiveField();
+    List<vector> lo(nB, vector::uniform(GREAT));
+    List<vector> hi(nB, vector::uniform(-GREAT));
+    forAll(near, c)
+    {
+        const label b = near[c];
+        if (b < 0) continue;
+        lo[b] = min(lo[b], C[c]);
+        hi[b] = max(hi[b], C[c]);
+    }
+    Pstream::listCombineGather(lo, minEqOp<vector>());
+    Pstream::listCombineScatter(lo);
+    Pstream::listCombineGather(hi, maxEqOp<vector>());
+    Pstream::listCombineScatter(hi);
+
+    // The gap between two boxes of cell centres: the largest separation
+    // along an axis (a lower bound of the near cells' distance, less a
+    // cell for the cells' halves beyond their centres)
+    scalar gap = GREAT;
+    for (label p = 0; p < nB; ++p)
+    {
+        for (label q = p + 1; q < nB; ++q)
+        {
+            scalar g = 0;
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                g = max(g, max(lo[q][d] - hi[p][d], lo[p][d] - hi[q][d]));
+            }
+            gap = min(gap, g);
+        }
+    }
+    // Both bodies closing in: the gap, less a cell and the three cells at
+    // which a search must still see them apart, halved
+    return max(maxTravel, min(maxWait, 0.5*(gap/h_ - 4)));
+}
+
+
+Foam::scalar Foam::bodyColours::correct(const labelList& phases)
 {
     const fvMesh& mesh = mixture_.rho().mesh();
     const labelUList& own = mesh.faceOwner();
@@ -114,6 +169,11 @@ void Foam::bodyColours::correct(const labelList& phases)
             if (a[c] <= edgeFraction) edge[c] = -1;
         }
         near[k] = grow(edge);
+    }
+    scalar wait = maxWait;
+    forAll(phases, k)
+    {
+        wait = min(wait, nextWait(near[k], nBodies[k]));
     }
 
     // Which cells are near a body of each colour, kept up to date as
@@ -207,6 +267,7 @@ void Foam::bodyColours::correct(const labelList& phases)
 
     if (nMoved)
     {
+        wait = maxTravel;
         Info<< "Body colours: " << nMoved << " bodies of "
             << mixture_.phases()[phases[0]].material
             << " moved to another colour";
@@ -226,6 +287,7 @@ void Foam::bodyColours::correct(const labelList& phases)
             << " entry colours) prevent it" << endl;
         warned_ = true;
     }
+    return wait;
 }
 
 
@@ -237,15 +299,20 @@ void Foam::bodyColours::correct(const scalar CoNum)
     // flow Courant number of the step (CourantNo.H's)
     const fvMesh& mesh = mixture_.rho().mesh();
     travelled_ += CoNum;
-    if (travelled_ < maxTravel && !mesh.changing())
+    if (travelled_ < wait_ && !mesh.changing())
     {
         return;
     }
     travelled_ = 0;
+    if (h_ == 0 || mesh.changing())
+    {
+        h_ = gMax(mag(mesh.delta())().primitiveField());
+    }
 
+    wait_ = maxWait;
     for (const labelList& g : materials_)
     {
-        correct(g);
+        wait_ = min(wait_, correct(g));
     }
 }
 
