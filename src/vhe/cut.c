@@ -42,6 +42,33 @@ static double dot3(const double a[3], const double b[3])
 #define VHE_CUT_MAXP 64
 #define VHE_CUT_MAXSEG 64
 
+void vhe_polygon_fan(int np, const double *p, double m[3], double S[3])
+{
+    /* (scalars: sums kept in arrays stall on their own stores) */
+    double mx = 0.0, my = 0.0, mz = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
+    double ax, ay, az;
+    const double r = 1.0 / np;
+    int i;
+    for (i = 0; i < np; ++i) {
+        mx += p[3 * i];
+        my += p[3 * i + 1];
+        mz += p[3 * i + 2];
+    }
+    mx *= r; my *= r; mz *= r;
+    ax = p[0] - mx; ay = p[1] - my; az = p[2] - mz;
+    for (i = 1; i <= np; ++i) {
+        const int k = i < np ? i : 0;
+        const double bx = p[3 * k] - mx, by = p[3 * k + 1] - my,
+                     bz = p[3 * k + 2] - mz;
+        sx += ay * bz - az * by;
+        sy += az * bx - ax * bz;
+        sz += ax * by - ay * bx;
+        ax = bx; ay = by; az = bz;
+    }
+    m[0] = mx; m[1] = my; m[2] = mz;
+    S[0] = 0.5 * sx; S[1] = 0.5 * sy; S[2] = 0.5 * sz;
+}
+
 int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
                  struct vhe_cut *out)
 {
@@ -60,7 +87,7 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
     for (k = 0; k < cell->nfaces; ++k) {
         const int s = cell->face_start[k], n = cell->face_start[k + 1] - s;
         double poly[VHE_CUT_MAXP][3], cuts[VHE_CUT_MAXP][3], d[VHE_CUT_MAXP / 2];
-        double mean[3] = {0.0, 0.0, 0.0}, S[3] = {0.0, 0.0, 0.0}, e0[3], r;
+        double mean[3], S[3];
         int idx[VHE_CUT_MAXP / 2], np = 0, ncut = 0, nin = 0, i, j;
 
         if (n > VHE_CUT_MAXP / 2) {
@@ -96,38 +123,13 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
             }
         }
         /* the submerged part's fan of triangles about its mean point m:
-         * area vector S = sum (p_i - m) x (p_i+1 - m)/2, and, the
-         * triangles' centres being m + (p_i - m + p_i+1 - m)/3 whose
-         * second part is normal to the triangle's area, (m - x0).S for
-         * its share of 3 x the volume */
-        {
-            /* (scalars: sums kept in arrays stall on their own stores) */
-            double mx = 0.0, my = 0.0, mz = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
-            double ax, ay, az;
-            r = 1.0 / np;
-            for (i = 0; i < np; ++i) {
-                mx += poly[i][0];
-                my += poly[i][1];
-                mz += poly[i][2];
-            }
-            mx *= r; my *= r; mz *= r;
-            ax = poly[0][0] - mx; ay = poly[0][1] - my; az = poly[0][2] - mz;
-            e0[0] = ax; e0[1] = ay; e0[2] = az;
-            for (i = 1; i <= np; ++i) {
-                double bx, by, bz;
-                if (i < np) {
-                    bx = poly[i][0] - mx; by = poly[i][1] - my; bz = poly[i][2] - mz;
-                } else {
-                    bx = e0[0]; by = e0[1]; bz = e0[2];
-                }
-                sx += ay * bz - az * by;
-                sy += az * bx - ax * bz;
-                sz += ax * by - ay * bx;
-                ax = bx; ay = by; az = bz;
-            }
-            S[0] = 0.5 * sx; S[1] = 0.5 * sy; S[2] = 0.5 * sz;
-            S_sub[0] += S[0]; S_sub[1] += S[1]; S_sub[2] += S[2];
-            mean[0] = mx - x0[0]; mean[1] = my - x0[1]; mean[2] = mz - x0[2];
+         * the triangles' centres being m + (p_i - m + p_i+1 - m)/3, whose
+         * second part is normal to the triangle's area, (m - x0).S is its
+         * share of 3 x the volume */
+        vhe_polygon_fan(np, &poly[0][0], mean, S);
+        for (j = 0; j < 3; ++j) {
+            S_sub[j] += S[j];
+            mean[j] -= x0[j];
         }
         vol3 += dot3(mean, S);
         /* its cut points pair up into the cut's edge segments: from where

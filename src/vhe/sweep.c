@@ -9,9 +9,10 @@
  * A(t) is piecewise quadratic in t (the submerged part of a plane polygon
  * grows by a strip whose width is linear in t), its pieces bounded by the
  * times the plane reaches the face's points: two-point Gauss on each piece
- * is exact.  The cut is made on the face's own points (a fan about the
- * part's mean point), so a face that is not quite plane is swept as the
- * cell cuts of cut.c see it.  No allocation.
+ * is exact.  The cut is made on the face's own points, its area the fan
+ * about the part's mean point that cut.c takes (vhe_polygon_fan), so a
+ * face that is not quite plane is swept as the cell cuts see it.  No
+ * allocation.
  */
 #include "vhe.h"
 
@@ -23,9 +24,7 @@
  * plane) where d < s */
 static double submerged(int n, const double *x, const double *d, double s)
 {
-    double poly[VHE_SWEEP_MAXP][3];
-    double mx = 0.0, my = 0.0, mz = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
-    double ax, ay, az;
+    double poly[VHE_SWEEP_MAXP][3], m[3], S[3];
     int np = 0, nin = 0, i, j;
 
     for (i = 0; i < n; ++i) {
@@ -53,22 +52,8 @@ static double submerged(int n, const double *x, const double *d, double s)
             ++np;
         }
     }
-    for (i = 0; i < np; ++i) {
-        mx += poly[i][0];
-        my += poly[i][1];
-        mz += poly[i][2];
-    }
-    mx /= np; my /= np; mz /= np;
-    ax = poly[np - 1][0] - mx; ay = poly[np - 1][1] - my; az = poly[np - 1][2] - mz;
-    for (i = 0; i < np; ++i) {
-        const double bx = poly[i][0] - mx, by = poly[i][1] - my,
-                     bz = poly[i][2] - mz;
-        sx += ay * bz - az * by;
-        sy += az * bx - ax * bz;
-        sz += ax * by - ay * bx;
-        ax = bx; ay = by; az = bz;
-    }
-    return 0.5 * sqrt(sx * sx + sy * sy + sz * sz);
+    vhe_polygon_fan(np, &poly[0][0], m, S);
+    return sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
 }
 
 double vhe_face_sweep(int n, const double *x, const double x0[3],

@@ -847,6 +847,12 @@ struct vhe_cut {
     double centre[3];
 };
 
+/* vhe_polygon_fan: a polygon of np points p (3 per point, in order
+ *   round it): its mean point m and its area vector S, the sum over its
+ *   fan of triangles about m of (p_i - m) x (p_i+1 - m)/2 (right-hand
+ *   order; exact for a plane polygon, OpenFOAM's face area otherwise). */
+void vhe_polygon_fan(int np, const double *p, double m[3], double S[3]);
+
 /* vhe_cell_cut: the part where f > iso.  Returns 0, or -1 for a face of
  *   more than 32 points. */
 int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,

@@ -90,7 +90,8 @@ Foam::scalar Foam::bodyColours::nextWait
     const label nB
 ) const
 {
-    if (periodic_ || nB < 2) return nB < 2 ? maxWait : maxTravel;
+    if (nB < 2) return maxWait;
+    if (periodic_) return maxTravel;
     const vectorField& C = mixture_.rho().mesh().C().primitiveField();
     List<vector> lo(nB, vector::uniform(GREAT));
     List<vector> hi(nB, vector::uniform(-GREAT));

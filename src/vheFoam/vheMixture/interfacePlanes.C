@@ -4,6 +4,7 @@
 
 #include "interfacePlanes.H"
 #include "vhe.h"
+#include "vheFlat.H"
 #include "volPointInterpolation.H"
 #include "pointStencil.H"
 #include "profiling.H"
@@ -145,15 +146,7 @@ bool Foam::interfacePlanes::cutCell
     // The cell for the C core: its points, and its faces in local point
     // indices, flipped where the cell is the face's neighbour
     const labelList& cp = mesh_.cellPoints()[c];
-    const pointField& pts = mesh_.points();
-    x_.setSize(3*cp.size());
-    forAll(cp, i)
-    {
-        const point& p = pts[cp[i]];
-        x_[3*i] = p.x();
-        x_[3*i + 1] = p.y();
-        x_[3*i + 2] = p.z();
-    }
+    x_ = UIndirectList<point>(mesh_.points(), cp);
     const cell& faces = mesh_.cells()[c];
     start_.setSize(faces.size() + 1);
     flip_.setSize(faces.size());
@@ -172,7 +165,7 @@ bool Foam::interfacePlanes::cutCell
 
     vhe_cell cellC;
     cellC.npoints = cp.size();
-    cellC.x = x_.cdata();
+    cellC.x = flat(x_);
     cellC.nfaces = faces.size();
     cellC.face_start = start_.cdata();
     cellC.face_pts = facePts_.cdata();

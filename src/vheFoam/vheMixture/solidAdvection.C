@@ -11,6 +11,7 @@
 #include "interpolationCellPoint.H"
 #include "profiling.H"
 #include "vhe.h"
+#include "vheFlat.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -113,7 +114,7 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     }
     // The volume the cell's plane, moving with the velocity at its centre,
     // carries through a downwind face over the step (C core)
-    List<scalar> fx;
+    DynamicList<point> fx;
     auto sweep = [&]
     (
         const label f, const point& x0, const vector& n0, const scalar Un0,
@@ -121,17 +122,10 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     )
     {
         const face& fc = mesh.faces()[f];
-        fx.setSize(3*fc.size());
-        forAll(fc, j)
-        {
-            const point& p = pts[fc[j]];
-            fx[3*j] = p.x();
-            fx[3*j + 1] = p.y();
-            fx[3*j + 2] = p.z();
-        }
+        fx = UIndirectList<point>(pts, fc);
         return vhe_face_sweep
         (
-            fc.size(), fx.cdata(), x0.cdata(), n0.cdata(), Un0, dt, phif,
+            fc.size(), flat(fx), x0.cdata(), n0.cdata(), Un0, dt, phif,
             magSff, 10*SMALL
         );
     };
