@@ -19,8 +19,9 @@
 #    solids are carried geometrically: the lower disk, flattened on the
 #    floor (G 10 Pa under 20 Pa of weight), leaves shreds of its corners in
 #    the wall cells as it rounds up (up to 4 regions at a write, bodies 0
-#    and 1 always there, their counted volume within 0.5 %, 1.9 % with
-#    contact, 1.3 and 2.7 % with OpenFOAM's isoCutFace face volumes; below a quarter of a cell inside the outline a cell carries
+#    and 1 always there, their counted volume within 0.5 to 1.3 %, 1.9 to
+#    2.7 % with contact, moved across that range by round-off changes of
+#    the transport; below a quarter of a cell inside the outline a cell carries
 #    no stress, vhe_body_weight, so the corners shred more easily than
 #    when every cell was stressed in proportion to phi_s: 2.1 %), and the disks
 #    come within 0.09 cell (MULES's compression kept them 0.9 cell apart);
