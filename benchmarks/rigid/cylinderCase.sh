@@ -13,8 +13,7 @@ DICT
     cat > "$d/constant/vheProperties" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object vheProperties; }
 fluids { liquid { rho [1 -3 0 0 0 0 0] 1; nu [0 2 -1 0 0 0 0] $nu; } }
-solids { cylinder { rho [1 -3 0 0 0 0 0] 1; nu [0 2 -1 0 0 0 0] $nu;
-                    rigid yes; $motion } }
+solids { cylinder { rho [1 -3 0 0 0 0 0] 1; rigid yes; $motion } }
 DICT
     cat > "$d/constant/g" <<DICT
 FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }

@@ -11,7 +11,7 @@ tankCase() {
     rm -rf "$d"
     sceneCase floatingBodies "$d" W="$W" H="$H" nx="$nx" ny="$ny" \
         depthWater="$(python3 -c "print(round($H + 0.01, 9))")" rhoWater=1000 \
-        nuWater="$nu" nuAir="$nu" rhoWood="$rho" nuWood="$nu" \
+        nuWater="$nu" nuAir="$nu" rhoWood="$rho" \
         endTime="$tend" writeInterval=0.01 maxDeltaT="$dtmax" || return 1
     cat > "$d/system/setBodiesDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }

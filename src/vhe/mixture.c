@@ -24,7 +24,7 @@ static double sqrt_phis(double p)
 
 void vhe_mixture(size_t n, int nphase, const double *const *alpha,
                  const double *rho_k, const double *mu_k, const double *G_k,
-                 const int *is_solid, double phis_min,
+                 const int *is_solid, const int *is_rigid, double phis_min,
                  double *rho, double *mu, double *phis, double *Ghat)
 {
     size_t c;
@@ -38,6 +38,8 @@ void vhe_mixture(size_t n, int nphase, const double *const *alpha,
         double m = 0.0;    /* [Pa s] */
         double s = 0.0;    /* solid fraction, unclipped */
         double sG = 0.0;   /* sum_solids alpha_m G_m [Pa] */
+        double fr = 0.0;   /* the rigid phases' fraction */
+        double f = 0.0, mf = 0.0;   /* the others', round-off below 0 out */
         double sc;
 
         for (k = 0; k < nphase; ++k) {
@@ -45,8 +47,12 @@ void vhe_mixture(size_t n, int nphase, const double *const *alpha,
             if (rho_k != NULL) {
                 r += a * rho_k[k];
             }
-            if (mu_k != NULL) {
+            if (is_rigid != NULL && is_rigid[k]) {
+                fr += a;
+            } else if (mu_k != NULL) {
                 m += a * mu_k[k];
+                mf += (a > 0.0 ? a : 0.0) * mu_k[k];
+                f += a > 0.0 ? a : 0.0;
             }
             if (is_solid != NULL && is_solid[k]) {
                 s += a;
@@ -60,7 +66,13 @@ void vhe_mixture(size_t n, int nphase, const double *const *alpha,
             rho[c] = r;
         }
         if (mu != NULL) {
-            mu[c] = m;
+            if (!(fr > 0.0)) {
+                mu[c] = m;
+            } else {
+                /* the other phases' mean over their own fraction (3/4
+                 * of the cell or more), from the fractions above 0 */
+                mu[c] = fr < VHE_RIGID_HELD && f > 0.0 ? mf / f : -1.0;
+            }
         }
         if (phis != NULL) {
             phis[c] = sc;

@@ -66,6 +66,9 @@ d=$(variant hugeG); setEntry "$d/$P" solids/rubber/G "[1 -1 -2 0 0 0 0] 1e300"
 expectFatal hugeG "$d" vheFoam "G of rubber is 1e\+300 Pa, above 1e\+20 Pa" vheProperties
 d=$(variant rigidWithG); foamDictionary -entry solids/rubber/rigid -add yes "$d/$P" > /dev/null
 expectFatal rigidWithG "$d" vheFoam "G has no meaning for the rigid material rubber" vheProperties
+d=$(variant rigidWithViscosity); foamDictionary -entry solids/rubber/rigid -add yes "$d/$P" > /dev/null
+delEntry "$d/$P" solids/rubber/G
+expectFatal rigidWithViscosity "$d" vheFoam "(mu|nu) has no meaning for the rigid material rubber: its bodies do not shear" vheProperties
 d=$(variant fixedNotRigid); foamDictionary -entry solids/rubber/motion -add fixed "$d/$P" > /dev/null
 expectFatal fixedNotRigid "$d" vheFoam "motion fixed holds a rigid body to a motion: set rigid yes for rubber" vheProperties
 d=$(variant unknownMotion); foamDictionary -entry solids/rubber/motion -add spinning "$d/$P" > /dev/null

@@ -51,7 +51,7 @@ import re, sys
 d = sys.argv[1]
 p = d + '/constant/vheProperties'
 s = re.sub(r'rubber \{[^}]*\}', 'rubber { rho [1 -3 0 0 0 0 0] $rhoDisk; '
-           'mu [1 -1 -1 0 0 0 0] $mu; rigid yes; }', open(p).read())
+           'rigid yes; }', open(p).read())
 open(p, 'w').write(s)
 PY
     couetteWalls "$d" "$n" || return 1
@@ -154,7 +154,7 @@ old = 'rigid yes; }\n}'
 if old not in s or 'contact { strength 0.5; }' not in s:
     sys.exit(p + ': no wood material or contact entry to change')
 s = s.replace(old, 'rigid yes; }\n    rock { rho [1 -3 0 0 0 0 0] 1000; '
-              'nu [0 2 -1 0 0 0 0] 1e-6; rigid yes; motion fixed; }\n}', 1)
+              'rigid yes; motion fixed; }\n}', 1)
 s = s.replace('contact { strength 0.5; }', 'contact { strength 0; }')
 open(p, 'w').write(s)
 PY2

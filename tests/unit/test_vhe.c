@@ -99,8 +99,8 @@ START_TEST(test_mixture_three_phases)
     double rho[5], mu[5], phis[5], Ghat[5];
     int c;
 
-    vhe_mixture(5, 3, alpha, RHO3, MU3, G3, SOLID3, 1e-6, rho, mu, phis,
-                Ghat);
+    vhe_mixture(5, 3, alpha, RHO3, MU3, G3, SOLID3, NULL, 1e-6, rho, mu,
+                phis, Ghat);
     for (c = 0; c < 5; ++c) {
         const double er = aw[c] * RHO3[0] + aa[c] * RHO3[1] + as[c] * RHO3[2];
         const double em = aw[c] * MU3[0] + aa[c] * MU3[1] + as[c] * MU3[2];
@@ -133,11 +133,42 @@ START_TEST(test_mixture_two_solids_and_nulls)
     double phis[2], Ghat[2];
 
     /* rho and mu skipped (NULL outputs) */
-    vhe_mixture(2, 3, alpha, rk, mk, gk, sk, 1e-6, NULL, NULL, phis, Ghat);
+    vhe_mixture(2, 3, alpha, rk, mk, gk, sk, NULL, 1e-6, NULL, NULL, phis,
+                Ghat);
     ASSERT_NEAR(phis[0], 0.6, 1e-15);
     ASSERT_NEAR(phis[1], 1.0, 1e-15);
     ASSERT_REL(Ghat[0], (0.45 * 1e5 + 0.15 * 1e3) / 0.6, 1e-14);
     ASSERT_REL(Ghat[1], 0.25 * 1e5 + 0.75 * 1e3, 1e-14);
+}
+END_TEST
+
+/* A rigid material has no viscosity of its own (its mu_k is not read):
+   below a quarter of a cell mu is the fluids' mean over their fraction,
+   from a quarter on -1 (the body holds the cell; its neighbours' is taken),
+   whatever traces of fluid the cell has; a cell without it keeps the
+   plain sum, bit for bit */
+START_TEST(test_mixture_rigid)
+{
+    /* water (1e-3 Pa s), oil (0.1), wood (rigid, 7: not read) */
+    const double aw[6] = {1.0, 0.5, 0.9, 0.0, 0.0, -1e-9};
+    const double ao[6] = {0.0, 0.3, 0.0, 1e-5, 0.75, 0.8};
+    const double ar[6] = {0.0, 0.2, 0.1, 1.0 - 1e-5, 0.25, 0.2};
+    const double *alpha[3] = {aw, ao, ar};
+    const double rk[3] = {1000.0, 800.0, 600.0};
+    const double mk[3] = {1e-3, 0.1, 7.0};
+    const int sk[3] = {0, 0, 0}, rg[3] = {0, 0, 1};
+    double rho[6], mu[6], phis[6];
+
+    vhe_mixture(6, 3, alpha, rk, mk, NULL, sk, rg, 1e-6, rho, mu, phis, NULL);
+    ck_assert(mu[0] == 1e-3);
+    ASSERT_REL(mu[1], (0.5 * 1e-3 + 0.3 * 0.1) / 0.8, 1e-14);
+    ASSERT_REL(mu[2], 1e-3, 1e-14);
+    ck_assert(mu[3] == -1.0);
+    ck_assert(mu[4] == -1.0);
+    ASSERT_REL(mu[5], 0.1, 1e-14);   /* round-off below 0 left out */
+    /* its density counts; it is not an elastic solid */
+    ASSERT_REL(rho[1], 0.5 * 1000.0 + 0.3 * 800.0 + 0.2 * 600.0, 1e-15);
+    ck_assert(phis[2] == 0.0);
 }
 END_TEST
 
@@ -258,6 +289,7 @@ static Suite *mixture_suite(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, test_mixture_three_phases);
     tcase_add_test(tc, test_mixture_two_solids_and_nulls);
+    tcase_add_test(tc, test_mixture_rigid);
     tcase_add_test(tc, test_elastic_stress);
     tcase_add_test(tc, test_body_weight);
     tcase_add_test(tc, test_wave_speed_and_elastic_dt);

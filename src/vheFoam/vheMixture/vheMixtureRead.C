@@ -64,17 +64,22 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
                 << rho.value() << exit(FatalIOError);
         }
 
+        // A rigid material has no modulus (its bodies move as rigid
+        // bodies, rigidBodies; it carries no B*) and no viscosity (the
+        // fluid beside its bodies shears, they do not: vhe_mixture)
+        const bool rigid = solid && pd.getOrDefault<Switch>("rigid", false);
         const bool hasMu = pd.found("mu");
         const bool hasNu = pd.found("nu");
-        if (hasMu == hasNu)
+        if (!rigid && hasMu == hasNu)
         {
             FatalIOErrorInFunction(pd)
                 << "Give exactly one of 'mu' [Pa s] or 'nu' [m2/s] for "
                 << name << exit(FatalIOError);
         }
-        const scalar visc = hasMu
-            ? dimensionedScalar("mu", dimDynamicViscosity, pd).value()
-            : dimensionedScalar("nu", dimViscosity, pd).value();
+        const scalar visc =
+            rigid ? 0
+          : hasMu ? dimensionedScalar("mu", dimDynamicViscosity, pd).value()
+          : dimensionedScalar("nu", dimViscosity, pd).value();
         if (visc < 0)
         {
             FatalIOErrorInFunction(pd)
@@ -83,14 +88,19 @@ void Foam::vheMixture::readPhases(const dictionary& dict, bool solid)
                 << exit(FatalIOError);
         }
 
-        // A rigid material has no modulus: its bodies move as rigid
-        // bodies (rigidBodies), it carries no B*
-        const bool rigid = solid && pd.getOrDefault<Switch>("rigid", false);
         if (rigid && pd.found("G"))
         {
             FatalIOErrorInFunction(pd)
                 << "G has no meaning for the rigid material " << name
                 << ": remove it, or set rigid no" << exit(FatalIOError);
+        }
+        if (rigid && (hasMu || hasNu))
+        {
+            FatalIOErrorInFunction(pd)
+                << (hasMu ? "mu" : "nu") << " has no meaning for the rigid"
+                << " material " << name << ": its bodies do not shear, and"
+                << " the fluid beside them gives the viscosity at their"
+                << " surface; remove it" << exit(FatalIOError);
         }
 
         // A rigid material's bodies move freely (motion free), are held
