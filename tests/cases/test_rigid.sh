@@ -88,8 +88,10 @@ check floatingVolumes "$drift < 1e-6" "largest relative phase volume drift $drif
 # A light rigid box (rho_s 100, a tenth of the water's), the same box
 # released 0.2 m under the surface: it rises through the surface and
 # floats, upright, at Archimedes' draft (0.0099 m, 0.4 cell) within 1 % of
-# its height over 35 <= t <= 40 (measured 0.01027 m, +0.36 %; +0.28 %
-# written every second; +0.64 % at 80 cells, still rising by 2e-5 m/s).
+# its height over 35 <= t <= 40 (measured 0.01005 m, +0.14 %; +0.36 %
+# while a rigid material had a viscosity of its own, the template's
+# 1e-3 m^2/s, 0.1 of the water's, at its surface; then +0.64 % at 80
+# cells, still rising by 2e-5 m/s).
 # Its edge cells' fluids are kept within the range of those beside it
 # (vheMixture::drainEdges): when they kept the fluids they had, the water
 # they brought up from depth rode on its top and it floated at 0.0166 m
