@@ -346,7 +346,14 @@ void Foam::vheMixture::rigidViscosity()
             if (mu[c] >= 0) smallest = min(smallest, mu[c]);
         }
         reduce(smallest, minOp<scalar>());
-        if (smallest == GREAT) smallest = min(muK_);
+        if (smallest == GREAT)
+        {
+            // no cell has one (a mesh the bodies fill): the fluids'
+            forAll(muK_, k)
+            {
+                if (!isRigid_[k]) smallest = min(smallest, muK_[k]);
+            }
+        }
         forAll(mu, c)
         {
             if (mu[c] < 0) mu[c] = smallest;
