@@ -13,7 +13,7 @@
 # maxDeltaT 0.005 s).  Writes DIR/velocity.dat (t, settling velocity,
 # centre height) from postProcessing/rigidBodies/0/poses.dat and prints
 # the largest settling velocity against the measured terminal one.  About
-# 2 min for E4 at 6 cells, 8 at 8 (2 cores: mpirun is not used).
+# 4 min for E4 at 6 cells, 10 at 8, 12 for E1 at 6 (serial, one core).
 . "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
 d=$1 c=$2 n=${3:-8}
 case $c in
