@@ -9,32 +9,15 @@
 # cubicArray.py DIR gives K = F/(6 pi mu a U), U the mean velocity over the
 # cell, against Hasimoto (1959)'s dilute series 1/(1 - 1.7601 C^(1/3) + C
 # - 1.5593 C^2).  About 1 min at 32 cells.
-. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/arrayCase.sh"
 d=$1 n=$2 c=$3 tend=${4:-3}
 r=$(python3 -c "import math; print((3*$c/(4*math.pi))**(1/3))")
-rm -rf "$d"
-channelCase "$d" cells="$n" nDisks=1 rigid=yes f=0.1 mu=1 endTime="$tend" writeInterval="$tend" || exit 1
-python3 - "$d" "$n" <<'PY'
-import sys
-d, n = sys.argv[1], sys.argv[2]
-def sub(path, old, new):
-    s = open(path).read()
-    if old not in s: sys.exit(path + ': no ' + old)
-    open(path, 'w').write(s.replace(old, new))
-sub(d + '/system/blockMeshDict', 'walls  { type wall; faces ((0 1 5 4) (3 7 6 2)); }',
-    'bottom { type cyclic; neighbourPatch top; faces ((0 1 5 4)); }\n    top    { type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }')
-sub(d + '/0/U', 'walls { type noSlip; }', 'bottom { type cyclic; }\n    top { type cyclic; }')
-sub(d + '/0/p_rgh', 'walls { type fixedFluxPressure; value uniform 0; }', 'bottom { type cyclic; }\n    top { type cyclic; }')
-sub(d + '/constant/vheProperties', 'rigid yes;', 'rigid yes; motion fixed;')
-PY
-sed -i 's/(\$cells \$cells 1)/($cells $cells $cells)/; s/    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }/    back  { type cyclic; neighbourPatch front; faces ((0 3 2 1)); }\n    front { type cyclic; neighbourPatch back; faces ((4 5 6 7)); }/' "$d/system/blockMeshDict"
-for f in "$d"/0/*; do sed -i 's/frontAndBack *{ *type empty; *}/back { type cyclic; }\n    front { type cyclic; }/' "$f"; done
-grep -q "frontAndBack" "$d"/0/* "$d/system/blockMeshDict" && { echo "still frontAndBack" >&2; grep -l frontAndBack "$d"/0/*; }
-cat > "$d/system/setBodiesDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
-bodies { s { material rubber; shape sphere; centre (0.5 0.5 0.5); radius $r; } }
-DICT
-(cd "$d" && foamDictionary -entry functions/flowRate/writeInterval -set 1 system/controlDict) > /dev/null
-fixedStep "$d" 0.01 || exit 1
-(cd "$d" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || { echo mesh failed; exit 1; }
-(cd "$d" && vheFoam > log.vheFoam 2>&1)
+periodicCell "$d" "$n" "$tend" || exit 1
+# z periodic too, on as many cells as x and y
+sed -i 's/($cells $cells 1)/($cells $cells $cells)/; s/    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }/    back  { type cyclic; neighbourPatch front; faces ((0 3 2 1)); }\n    front { type cyclic; neighbourPatch back; faces ((4 5 6 7)); }/' "$d/system/blockMeshDict"
+for f in "$d"/0/*; do
+    sed -i 's/frontAndBack *{ *type empty; *}/back { type cyclic; }\n    front { type cyclic; }/' "$f"
+done
+! grep -q "frontAndBack" "$d"/0/* "$d/system/blockMeshDict" \
+    || { echo "could not make $d 3D" >&2; exit 1; }
+runCell "$d" 0.01 "s { material rubber; shape sphere; centre (0.5 0.5 0.5); radius $r; }"

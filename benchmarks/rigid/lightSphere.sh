@@ -9,23 +9,13 @@
 # against Archimedes' spherical cap (0.03897 m), in per cent of the
 # diameter, the largest relative phase volume drift, and the vertical
 # velocity at the end.  About 1 min at 16 cells, 4 at 24, 12 at 32.
-. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/tank.sh"
 d=$1 n=${2:-16}
 rm -rf "${d:?}"
 sceneCase floatingBlock "$d" W=0.6 H=0.6 nx="$n" ny="$n" depthOil=0 depthWater=0.35 \
     shape=disk radius=0.1 blockBottom=0.05 nuWater=1e-2 rhoSolid=100 rigid=yes \
     endTime=10 writeInterval=10 || exit 1
-sed -i 's/^thickness .*/thickness 0.6;/' "$d/system/parameters"
-sed -i "s/(\$nx \$ny 1)/(\$nx \$ny $n)/; s/frontAndBack { type empty;/frontAndBack { type wall;/" \
-    "$d/system/blockMeshDict"
-for f in "$d"/0/*; do      # the front and back walls as the side walls
-    w=$(grep -o "walls *{[^}]*}" "$f" | sed 's/walls//')
-    sed -i "s|frontAndBack *{ *type empty; *}|frontAndBack $w|" "$f"
-done
-sed -i 's/shape    disk;/shape    sphere;/; s|centre   (.*);|centre (0.3 0.15 0.3);|' \
-    "$d/system/setBodiesDict"
-grep -q "shape    sphere" "$d/system/setBodiesDict" && grep -q "type wall; faces ((0 3 2 1)" \
-    "$d/system/blockMeshDict" || { echo "could not make $d 3D" >&2; exit 1; }
+sphereTank "$d" 0.6 "$n" "0.3 0.15 0.3" || exit 1
 (run "$d" blockMesh && run "$d" setFields && run "$d" setBodies && run "$d" vheFoam) \
     || { echo "failed: $d" >&2; exit 1; }
 draft=$(python3 "$TESTS_DIR/floating.py" bodyDraft "$d" 0.2 8)

@@ -1,6 +1,7 @@
 # Sourced by settling.sh and dkt.sh: a tank of the floatingBodies template
 # full of water (rho 1000, nu 1e-6), rigid bodies of material "wood",
-# decomposed in y for 2 ranks.
+# decomposed in y for 2 ranks.  And by lightSphere.sh and tenCate.sh:
+# sphereTank, the floatingBlock template made 3D with a sphere.
 . "$(dirname "${BASH_SOURCE[0]}")/../../tests/cases/lib.sh" 2>/dev/null
 
 # tankCase DIR W H NX NY RHO_BODY ENDTIME MAXDELTAT BODIES [NU]: the case
@@ -40,4 +41,22 @@ tankRun() {
     (cd "$1" && setFields > log.setFields 2>&1 && setBodies > log.setBodies 2>&1 \
         && decomposePar > log.decomposePar 2>&1) || return 1
     (cd "$1" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1)
+}
+
+# sphereTank DIR THICKNESS NZ CENTRE: the floatingBlock case in DIR (its
+# shape disk) made 3D: THICKNESS deep in z on NZ cells, its front and back
+# the side walls' conditions, the disk a sphere centred at CENTRE ("x y z")
+sphereTank() {
+    local d=$1 depth=$2 nz=$3 centre=$4 f w
+    sed -i "s/^thickness .*/thickness $depth;/" "$d/system/parameters"
+    sed -i "s/(\$nx \$ny 1)/(\$nx \$ny $nz)/; s/frontAndBack { type empty;/frontAndBack { type wall;/" \
+        "$d/system/blockMeshDict"
+    for f in "$d"/0/*; do      # the front and back walls as the side walls
+        w=$(grep -o "walls *{[^}]*}" "$f" | sed 's/walls//')
+        sed -i "s|frontAndBack *{ *type empty; *}|frontAndBack $w|" "$f"
+    done
+    sed -i "s/shape    disk;/shape    sphere;/; s|centre   (.*);|centre ($centre);|" \
+        "$d/system/setBodiesDict"
+    grep -q "shape    sphere" "$d/system/setBodiesDict" && grep -q "type wall; faces ((0 3 2 1)" \
+        "$d/system/blockMeshDict" || { echo "could not make $d 3D" >&2; return 1; }
 }

@@ -14,7 +14,7 @@
 # centre height) from postProcessing/rigidBodies/0/poses.dat and prints
 # the largest settling velocity against the measured terminal one.  About
 # 4 min for E4 at 6 cells, 10 at 8, 12 for E1 at 6 (serial, one core).
-. "$(dirname "$0")/../../tests/cases/lib.sh" 2>/dev/null
+. "$(dirname "$0")/tank.sh"
 d=$1 c=$2 n=${3:-8}
 case $c in
     E1) rho=970 mu=0.373 uInf=0.038 tEnd=4.5 ;;
@@ -30,19 +30,9 @@ sceneCase floatingBlock "$d" W=0.1 H=0.16 nx="$nx" ny="$ny" depthOil=0 depthWate
     blockBottom=0.12 rhoSolid=1120 rigid=yes \
     endTime="$tEnd" writeInterval="$tEnd" \
     maxDeltaT=0.005 || exit 1
-sed -i 's/^thickness .*/thickness 0.1;/' "$d/system/parameters"
-sed -i "s/(\$nx \$ny 1)/(\$nx \$ny $nx)/; s/frontAndBack { type empty;/frontAndBack { type wall;/" \
-    "$d/system/blockMeshDict"
-for f in "$d"/0/*; do      # the front and back walls as the side walls
-    w=$(grep -o "walls *{[^}]*}" "$f" | sed 's/walls//')
-    sed -i "s|frontAndBack *{ *type empty; *}|frontAndBack $w|" "$f"
-done
+sphereTank "$d" 0.1 "$nx" "0.05 0.1275 0.05" || exit 1
 sed -i 's/top   { type slip; }/top   { type noSlip; }/' "$d/0/U"
-sed -i 's/shape    disk;/shape    sphere;/; s|centre   (.*);|centre (0.05 0.1275 0.05);|' \
-    "$d/system/setBodiesDict"
-grep -q "shape    sphere" "$d/system/setBodiesDict" && grep -q "top   { type noSlip; }" "$d/0/U" \
-    && grep -q "type wall; faces ((0 3 2 1)" "$d/system/blockMeshDict" \
-    || { echo "could not make $d 3D" >&2; exit 1; }
+grep -q "top   { type noSlip; }" "$d/0/U" || { echo "could not close $d's top" >&2; exit 1; }
 (run "$d" blockMesh && run "$d" setFields && run "$d" setBodies && run "$d" vheFoam) \
     || { echo "failed: $d" >&2; exit 1; }
 awk '!/^#/ {print $1, -$7, $4}' "$d/postProcessing/rigidBodies/0/poses.dat" > "$d/velocity.dat"
