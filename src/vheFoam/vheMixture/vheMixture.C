@@ -315,16 +315,8 @@ void Foam::vheMixture::rigidViscosity()
             take(own[f], mu[nei[f]]);
             take(nei[f], mu[own[f]]);
         }
-        scalarField other(mesh_.nBoundaryFaces(), -1);
-        for (const polyPatch& pp : pbm)
-        {
-            if (!pp.coupled()) continue;
-            forAll(pp, i)
-            {
-                other[pp.start() - nInt + i] = mu[pp.faceCells()[i]];
-            }
-        }
-        syncTools::swapBoundaryFaceList(mesh_, other);
+        scalarField other;
+        syncTools::swapBoundaryCellList(mesh_, mu, other);
         for (const polyPatch& pp : pbm)
         {
             if (!pp.coupled()) continue;
