@@ -3,16 +3,21 @@
 # box, ten Cate et al. (2002, Phys. Fluids 14, 4012): box 100 x 100 x 160
 # mm (x, z across, y up), sphere d = 15 mm, rho_s 1120 kg/m^3, released
 # from rest with its lowest point 120 mm above the floor (centre at 127.5
-# mm), in silicone oil (CASE: rho_f kg/m^3, mu Pa s, measured terminal
-# velocity m/s, Reynolds number):
+# mm), in silicone oil (CASE: rho_f kg/m^3, mu Pa s, u_inf m/s, Re):
 #   E1  970 0.373 0.038  1.5      E3  962 0.113 0.091 11.6
 #   E2  965 0.212 0.060  4.1      E4  960 0.058 0.128 31.9
+# u_inf is the paper's table's terminal velocity in an unbounded liquid,
+# not a velocity measured in the box: Abraham's drag correlation, Cd =
+# 24/9.06^2 (1 + 9.06/Re^(1/2))^2, at u_inf balances the sphere's weight
+# less its buoyancy within 0.8 % in all four cases.  In the box the walls
+# slow the sphere (in Stokes flow a tube of the box's width would slow it
+# by about 30 %); the paper's measured velocities are in its figures.
 # CELLS_PER_D cells across the sphere (8 by default: 53 x 85 x 53 cells).
 # No-slip walls all round (the top too), g 9.81, the user's defaults
 # otherwise (the floatingBlock template: one outer iteration, maxCo 0.5,
 # maxDeltaT 0.005 s).  Writes DIR/velocity.dat (t, settling velocity,
 # centre height) from postProcessing/rigidBodies/0/poses.dat and prints
-# the largest settling velocity against the measured terminal one.  About
+# the largest settling velocity against u_inf.  About
 # 4 min for E4 at 6 cells, 10 at 8, 12 for E1 at 6 (serial, one core).
 . "$(dirname "$0")/tank.sh"
 d=$1 c=$2 n=${3:-8}
@@ -38,5 +43,5 @@ grep -q "top   { type noSlip; }" "$d/0/U" || { echo "could not close $d's top" >
 awk '!/^#/ {print $1, -$7, $4}' "$d/postProcessing/rigidBodies/0/poses.dat" > "$d/velocity.dat"
 awk -v c="$c" -v n="$n" -v u="$uInf" -v mu="$mu" -v rho="$rho" '
     $2 > m {m = $2; t = $1} END {
-    printf "%s, %d cells per d: largest settling velocity %.4f m/s at t = %.3f s (Re %.2f), measured %.3f: %+.1f %%\n",
+    printf "%s, %d cells per d: largest settling velocity %.4f m/s at t = %.3f s (Re %.2f), u_inf (unbounded) %.3f: %+.1f %%\n",
         c, n, m, t, rho*m*0.015/mu, u, 100*(m - u)/u}' "$d/velocity.dat"
