@@ -34,13 +34,7 @@ case $mode in
 esac
 [ "$mode" = moving ] && y=$(python3 -c "print(0.08 + $u*$tEnd)")
 [ "$W" = 0.1 ] || [ "$mode" = fixed ] || [ "$mode" = moving ] || { echo "WIDTH is for the duct only" >&2; exit 1; }
-read -r nx ny <<< "$(python3 -c "n = $n; print(round($W*1000/15*n), round($H*1000/15*n))")"
-rm -rf "${d:?}"
-sceneCase floatingBlock "$d" W=$W H=$H nx="$nx" ny="$ny" depthOil=0 depthWater=$H \
-    rhoWater="$rho" nuWater="$(python3 -c "print($mu/$rho)")" shape=disk radius=0.0075 \
-    blockBottom=0.12 rhoSolid=1120 rigid=yes endTime="$tEnd" writeInterval="$tEnd" \
-    maxDeltaT=0.005 || exit 1
-sphereTank "$d" "$W" "$nx" "$(python3 -c "print($W/2)") $y $(python3 -c "print($W/2)")" || exit 1
+tenCateSphere "$d" "$W" "$H" "$n" "$rho" "$mu" "$y" "$tEnd" || exit 1
 props=$d/constant/vheProperties
 case $mode in
     fixed) motion="motion fixed;" ;;
@@ -50,7 +44,6 @@ case $mode in
 esac
 sed -i "s|rigid yes;|rigid yes; $motion|" "$props"
 grep -q "rigid yes; motion" "$props" || { echo "could not set $props's motion" >&2; exit 1; }
-sed -i 's/top   { type slip; }/top   { type noSlip; }/' "$d/0/U"
 if [ "$mode" = fixed ] || [ "$mode" = moving ]; then
     # The duct: the bottom an inlet, the top an outlet, no gravity (and no
     # water level to find)
@@ -83,7 +76,6 @@ PY
     grep -q "inlet { type patch" "$d/system/blockMeshDict" || { echo "could not make $d a duct" >&2; exit 1; }
     buoyancy=0
 else
-    grep -q "top   { type noSlip; }" "$d/0/U" || { echo "could not close $d's top" >&2; exit 1; }
     buoyancy=$(python3 -c "import math; print($rho*math.pi/6*0.015**3*9.81)")
 fi
 (run "$d" blockMesh && run "$d" setFields && run "$d" setBodies && run "$d" vheFoam) \

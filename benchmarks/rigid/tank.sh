@@ -1,7 +1,8 @@
 # Sourced by settling.sh and dkt.sh: a tank of the floatingBodies template
 # full of water (rho 1000, nu 1e-6), rigid bodies of material "wood",
-# decomposed in y for 2 ranks.  And by lightSphere.sh and tenCate.sh:
-# sphereTank, the floatingBlock template made 3D with a sphere.
+# decomposed in y for 2 ranks.  And by lightSphere.sh, tenCate.sh and
+# sphereDrag.sh: sphereTank, the floatingBlock template made 3D with a
+# sphere, and tenCateSphere, ten Cate's sphere in a closed box of oil.
 . "$(dirname "${BASH_SOURCE[0]}")/../../tests/cases/lib.sh" 2>/dev/null
 
 # tankCase DIR W H NX NY RHO_BODY ENDTIME MAXDELTAT BODIES [NU]: the case
@@ -59,4 +60,22 @@ sphereTank() {
         "$d/system/setBodiesDict"
     grep -q "shape    sphere" "$d/system/setBodiesDict" && grep -q "type wall; faces ((0 3 2 1)" \
         "$d/system/blockMeshDict" || { echo "could not make $d 3D" >&2; return 1; }
+}
+
+# tenCateSphere DIR W H CELLS_PER_D RHO MU Y ENDTIME: ten Cate et al.'s
+# sphere (d 15 mm, rho_s 1120, rigid) at height Y on the axis of a W x H x
+# W box (y up) full of one liquid (RHO kg/m^3, MU Pa s), CELLS_PER_D cells
+# across the sphere, no-slip walls all round (the top too), maxDeltaT
+# 0.005 s, to ENDTIME
+tenCateSphere() {
+    local d=$1 W=$2 H=$3 n=$4 rho=$5 mu=$6 y=$7 tEnd=$8 nx ny
+    read -r nx ny <<< "$(python3 -c "n = $n; print(round($W*1000/15*n), round($H*1000/15*n))")"
+    rm -rf "${d:?}"
+    sceneCase floatingBlock "$d" W="$W" H="$H" nx="$nx" ny="$ny" depthOil=0 depthWater="$H" \
+        rhoWater="$rho" nuWater="$(python3 -c "print($mu/$rho)")" shape=disk radius=0.0075 \
+        blockBottom=0.12 rhoSolid=1120 rigid=yes endTime="$tEnd" writeInterval="$tEnd" \
+        maxDeltaT=0.005 || return 1
+    sphereTank "$d" "$W" "$nx" "$(python3 -c "print($W/2, $y, $W/2)")" || return 1
+    sed -i 's/top   { type slip; }/top   { type noSlip; }/' "$d/0/U"
+    grep -q "top   { type noSlip; }" "$d/0/U" || { echo "could not close $d's top" >&2; return 1; }
 }

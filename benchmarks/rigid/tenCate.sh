@@ -28,16 +28,7 @@ case $c in
     E4) rho=960 mu=0.058 uInf=0.128 tEnd=1.5 ;;
     *) echo "Usage: $0 DIR E1|E2|E3|E4 [CELLS_PER_D]" >&2; exit 1 ;;
 esac
-read -r nx ny <<< "$(python3 -c "n = $n; print(round(100/15*n), round(160/15*n))")"
-rm -rf "${d:?}"
-sceneCase floatingBlock "$d" W=0.1 H=0.16 nx="$nx" ny="$ny" depthOil=0 depthWater=0.2 \
-    rhoWater="$rho" nuWater="$(python3 -c "print($mu/$rho)")" shape=disk radius=0.0075 \
-    blockBottom=0.12 rhoSolid=1120 rigid=yes \
-    endTime="$tEnd" writeInterval="$tEnd" \
-    maxDeltaT=0.005 || exit 1
-sphereTank "$d" 0.1 "$nx" "0.05 0.1275 0.05" || exit 1
-sed -i 's/top   { type slip; }/top   { type noSlip; }/' "$d/0/U"
-grep -q "top   { type noSlip; }" "$d/0/U" || { echo "could not close $d's top" >&2; exit 1; }
+tenCateSphere "$d" 0.1 0.16 "$n" "$rho" "$mu" 0.1275 "$tEnd" || exit 1
 (run "$d" blockMesh && run "$d" setFields && run "$d" setBodies && run "$d" vheFoam) \
     || { echo "failed: $d" >&2; exit 1; }
 awk '!/^#/ {print $1, -$7, $4}' "$d/postProcessing/rigidBodies/0/poses.dat" > "$d/velocity.dat"
