@@ -225,6 +225,55 @@ double vhe_shape_sdf_posed(const struct vhe_shape *s, const double Q[9],
     return vhe_shape_sdf(s, y);
 }
 
+double vhe_shape_crossing(const struct vhe_shape *s, const double Q[9],
+                          const double X[3], const double xo[3],
+                          const double xi[3], double so, double si)
+{
+    double a = 0.0, z = 1.0, t, len2 = 0.0;
+    int it, d, side = 0;
+    if (!(so > 0.0) || !(si < 0.0)) {
+        return 1.0;
+    }
+    for (d = 0; d < 3; ++d) {
+        len2 += (xi[d] - xo[d]) * (xi[d] - xo[d]);
+    }
+    t = so / (so - si);
+    for (it = 0; it < 8; ++it) {
+        double x[3], f;
+        for (d = 0; d < 3; ++d) {
+            x[d] = xo[d] + t * (xi[d] - xo[d]);
+        }
+        f = vhe_shape_sdf_posed(s, Q, X, x);
+        if (f * f <= 1e-18 * len2) {
+            break;
+        }
+        /* Illinois: halve the value of an end kept twice in a row */
+        if (f > 0.0) {
+            a = t;
+            so = f;
+            if (side == 1) {
+                si *= 0.5;
+            }
+            side = 1;
+        } else {
+            z = t;
+            si = f;
+            if (side == -1) {
+                so *= 0.5;
+            }
+            side = -1;
+        }
+        t = a + (z - a) * so / (so - si);
+    }
+    return t < 1e-6 ? 1e-6 : (t > 1.0 ? 1.0 : t);
+}
+
+double vhe_wall_coefficient(double magS, double dist, double delta)
+{
+    const double dl = delta < 1e-6 ? 1e-6 : delta;
+    return dl >= 1.0 || dist <= 0.0 ? 0.0 : magS / dist * (1.0 / dl - 1.0);
+}
+
 double vhe_shape_fraction(const struct vhe_shape *s, const double lo[3],
                           const double hi[3], int ndim, int max_depth)
 {

@@ -454,6 +454,28 @@ void vhe_shape_bounds_posed(const struct vhe_shape *s, const double Q[9],
 double vhe_shape_sdf_posed(const struct vhe_shape *s, const double Q[9],
                            const double X[3], const double x[3]);
 
+/*
+ * Where the moved shape's surface cuts the segment from xo (outside, its
+ * sdf so > 0) to xi (inside, sdf si < 0): the fraction of the segment from
+ * xo, in (0, 1].  Regula falsi (Illinois) on the sdf along the segment, to
+ * 1e-9 of its length or 8 evaluations; exact at once where the sdf is
+ * linear along it (a plane).  Returns 1 where so <= 0 or si >= 0.  This is
+ * the fluid's share delta of the segment between a fluid cell's centre and
+ * a held cell's: the wall penalty mu |S|/|d| (1/delta - 1) of the fluid
+ * cell (vhe_wall_coefficient) puts the wall's viscous stress at the
+ * surface, not at the held cell's centre.
+ */
+double vhe_shape_crossing(const struct vhe_shape *s, const double Q[9],
+                          const double X[3], const double xo[3],
+                          const double xi[3], double so, double si);
+
+/*
+ * The wall penalty's geometric factor of a face of area magS between
+ * centres dist apart, the fluid's share of the segment delta: magS/dist
+ * (1/delta - 1), >= 0 (delta below 1e-6 taken as 1e-6).
+ */
+double vhe_wall_coefficient(double magS, double dist, double delta);
+
 /* -------------------------------------------------------------- packings */
 
 /*

@@ -997,6 +997,127 @@ START_TEST(test_shape_fraction_limits)
 }
 END_TEST
 
+START_TEST(test_shape_crossing)
+{
+    /* Where a surface cuts a segment: exact at once across a box's face,
+     * to 1e-9 across a sphere's and an ellipsoid's curved ones */
+    const double Q[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    struct vhe_shape box = make_shape(VHE_BOX, 0, 0, 0);
+    struct vhe_shape sph = make_shape(VHE_SPHERE, 0, 0, 0);
+    struct vhe_shape ell = make_shape(VHE_ELLIPSOID, 0, 0, 0);
+    double X[3] = {0, 0, 0}, xo[3], xi[3], x[3], t, f;
+    int d;
+    box.semi[0] = 1; box.semi[1] = 1; box.semi[2] = 1;
+    sph.radius = 1.0;
+    ell.semi[0] = 2; ell.semi[1] = 1; ell.semi[2] = 1;
+
+    xo[0] = 1.3; xo[1] = 0.2; xo[2] = 0.1;   /* the face x = 1 at 0.6 */
+    xi[0] = 0.8; xi[1] = 0.2; xi[2] = 0.1;
+    t = vhe_shape_crossing(&box, Q, X, xo, xi,
+                           vhe_shape_sdf_posed(&box, Q, X, xo),
+                           vhe_shape_sdf_posed(&box, Q, X, xi));
+    ASSERT_NEAR(t, 0.6, 1e-14);
+
+    xo[0] = 1.2; xo[1] = 0.3; xo[2] = 0;     /* x = sqrt(1 - 0.09) */
+    xi[0] = 0.7; xi[1] = 0.3; xi[2] = 0;
+    t = vhe_shape_crossing(&sph, Q, X, xo, xi,
+                           vhe_shape_sdf_posed(&sph, Q, X, xo),
+                           vhe_shape_sdf_posed(&sph, Q, X, xi));
+    ASSERT_NEAR(t, (1.2 - sqrt(0.91)) / 0.5, 1e-9);
+
+    /* the ellipsoid's sdf is a bound, not a distance: the crossing is
+     * still on its surface */
+    xo[0] = 1.5; xo[1] = 0.9; xo[2] = 0;
+    xi[0] = 1.0; xi[1] = 0.5; xi[2] = 0;
+    t = vhe_shape_crossing(&ell, Q, X, xo, xi,
+                           vhe_shape_sdf_posed(&ell, Q, X, xo),
+                           vhe_shape_sdf_posed(&ell, Q, X, xi));
+    for (d = 0; d < 3; ++d) {
+        x[d] = xo[d] + t * (xi[d] - xo[d]);
+    }
+    f = x[0] * x[0] / 4 + x[1] * x[1] - 1;
+    ASSERT_NEAR(f, 0.0, 1e-8);
+
+    /* no crossing: 1 */
+    ck_assert(vhe_shape_crossing(&sph, Q, X, xi, xo, -0.1, 0.2) == 1.0);
+}
+END_TEST
+
+START_TEST(test_wall_linear_shear)
+{
+    /* Plane shear beside a wall anywhere in a cell: cells of width h on
+     * [0, L], the wall at xw (a box's face), cells whose centres are inside
+     * held at 0, u = s (L - xw) at x = L; the first fluid cell's wall
+     * penalty mu vhe_wall_coefficient/V makes the discrete steady
+     * diffusion reproduce u = s (x - xw) exactly.  Without it the error is
+     * of the cell's order (checked too) */
+    const double Q[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const int n = 10;
+    const double L = 1.0, h = L / n, mu = 1.7, sl = 2.0;
+    double xw;
+    int pen;
+    for (xw = 0.21; xw < 0.45; xw += 0.037) {
+        for (pen = 1; pen >= 0; --pen) {
+            struct vhe_shape wall = make_shape(VHE_BOX, xw - 5, 0, 0);
+            double X[3], a[10], b[10], c[10], r[10], u[10], err = 0;
+            int i;
+            wall.semi[0] = 5; wall.semi[1] = 50; wall.semi[2] = 50;
+            X[0] = wall.centre[0]; X[1] = 0; X[2] = 0;
+            for (i = 0; i < n; ++i) {
+                const double xc = (i + 0.5) * h;
+                const double p[3] = {xc, 0, 0};
+                a[i] = 0; b[i] = 0; c[i] = 0; r[i] = 0;
+                if (vhe_shape_sdf_posed(&wall, Q, X, p) < 0) {
+                    b[i] = 1;                        /* held at 0 */
+                    continue;
+                }
+                /* unit area: V = h, faces' coefficient mu/h */
+                a[i] = -mu / h;
+                b[i] = 2 * mu / h;
+                c[i] = -mu / h;
+                if (i == n - 1) {                    /* u(L) at h/2 */
+                    b[i] = mu / h + 2 * mu / h;
+                    c[i] = 0;
+                    r[i] = 2 * mu / h * sl * (L - xw);
+                }
+                if (i > 0 && b[i - 1] == 1 && a[i - 1] == 0) {
+                    const double q[3] = {xc - h, 0, 0};
+                    const double dl = vhe_shape_crossing
+                    (
+                        &wall, Q, X, p, q,
+                        vhe_shape_sdf_posed(&wall, Q, X, p),
+                        vhe_shape_sdf_posed(&wall, Q, X, q)
+                    );
+                    b[i] += pen * mu * vhe_wall_coefficient(1.0, h, dl);
+                }
+            }
+            /* Thomas */
+            for (i = 1; i < n; ++i) {
+                const double m = a[i] / b[i - 1];
+                b[i] -= m * c[i - 1];
+                r[i] -= m * r[i - 1];
+            }
+            u[n - 1] = r[n - 1] / b[n - 1];
+            for (i = n - 2; i >= 0; --i) {
+                u[i] = (r[i] - c[i] * u[i + 1]) / b[i];
+            }
+            for (i = 0; i < n; ++i) {
+                const double xc = (i + 0.5) * h;
+                if (xc > xw) {
+                    const double e = fabs(u[i] - sl * (xc - xw));
+                    err = e > err ? e : err;
+                }
+            }
+            if (pen) {
+                ASSERT_NEAR(err, 0.0, 1e-12);
+            } else {
+                ck_assert(err > 1e-3 * sl * h);
+            }
+        }
+    }
+}
+END_TEST
+
 START_TEST(test_shape_sdf)
 {
     /* exact values, and Lipschitz-1 with the right sign on random pairs */
@@ -1111,6 +1232,8 @@ static Suite *shapes_suite(void)
     tcase_add_test(tc, test_shape_cylinder_3d);
     tcase_add_test(tc, test_shape_fraction_limits);
     tcase_add_test(tc, test_shape_sdf);
+    tcase_add_test(tc, test_shape_crossing);
+    tcase_add_test(tc, test_wall_linear_shear);
     tcase_add_test(tc, test_shape_bounds);
     suite_add_tcase(s, tc);
     return s;

@@ -43,7 +43,7 @@ void Foam::rigidBodies::correct(volVectorField& U)
     {
         const label b = body_[c];
         if (b < 0) continue;
-        const vector du(w_[c]*(Ub[b] + (omega[b] ^ r_[c]) - u[c]));
+        const vector du(hold_[c]*(Ub[b] + (omega[b] ^ r_[c]) - u[c]));
         const vector f(Addt[c]*V[c]*du);
         Fc[b] += f;
         Tc[b] += r_[c] ^ f;
@@ -115,7 +115,8 @@ void Foam::rigidBodies::correct(volVectorField& U)
     {
         if
         (
-            body_[c] >= 0 && w_[c] >= 0.1 && reached_[c] == 1
+            body_[c] >= 0 && reached_[c] == 1
+         && (shaped_[body_[c]] ? hold_[c] >= 1 : w_[c] >= 0.1)
          && !nearOther[c]
         )
         {

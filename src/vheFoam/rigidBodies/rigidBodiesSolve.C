@@ -52,10 +52,12 @@ void Foam::rigidBodies::solve
     const fvMesh& mesh = U.mesh();
     const scalarField& V = mesh.V();
 
-    // The penalty: a cell of weight w takes w U_R + (1 - w) U_free, U_free
-    // its steady velocity without the penalty (the edge's C leaves out
-    // the time derivative's rho/dt, else the blend compounds step after
-    // step at small dt); a cell of weight 1 is held at P times A
+    // The penalty: a held cell (hold 1) at P times A; a fluid cell beside
+    // a known surface at the wall's missing viscous stress, mu wallK/V
+    // (edge()); a cell of a body whose shape is not known, of hold w in
+    // (0, 1), takes w U_R + (1 - w) U_free, U_free its steady velocity
+    // without the penalty (that C leaves out the time derivative's
+    // rho/dt, else the blend compounds step after step at small dt)
     const volScalarField A(UEqn.A());
     volScalarField Cp
     (
@@ -65,12 +67,16 @@ void Foam::rigidBodies::solve
     );
     scalarField& cp = Cp.primitiveFieldRef();
     const scalarField Addt(timeCoefficient(U));
+    const scalarField& mu = mixture_.mu().primitiveField();
     forAll(body_, c)
     {
         if (body_[c] < 0) continue;
-        cp[c] = w_[c] < 1
-          ? min(penalty*A[c], (A[c] - Addt[c])*w_[c]/(1 - w_[c]))
+        const scalar h = hold_[c];
+        const scalar k =
+            h < 1
+          ? (A[c] - Addt[c])*h/(1 - h) + mu[c]*wallK_[c]/V[c]
           : penalty*A[c];
+        cp[c] = min(penalty*A[c], k);
     }
 
     // Start from the last projection's rigid motion

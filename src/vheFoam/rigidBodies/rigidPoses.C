@@ -46,7 +46,7 @@ Foam::rigidPoses::rigidPoses
 {
     const fvMesh& mesh = mixture.rho().mesh();
     const List<vheMixture::phase>& phases = mixture.phases();
-    if (rigidPhases.empty() || !state_.isDict("bodies")) return;
+    if (!state_.isDict("bodies")) return;
 
     // The bodies of the free rigid materials
     DynamicList<body> found;
@@ -163,6 +163,39 @@ Foam::rigidPoses::rigidPoses
         Info<< "Rigid bodies: " << bodies_.size() << " carried with their"
             << " shapes (" << state_.objectPath() << ")" << nl << endl;
     }
+}
+
+
+bool Foam::rigidPoses::fixedShape(const label i) const
+{
+    for (const body& o : obstacles_)
+    {
+        if (o.material == mixture_.phases()[i].material) return true;
+    }
+    return false;
+}
+
+
+const Foam::rigidPoses::body& Foam::rigidPoses::nearestFixed
+(
+    const label i,
+    const vector& x
+) const
+{
+    label nearest = -1;
+    scalar d = GREAT;
+    forAll(obstacles_, o)
+    {
+        const body& ob = obstacles_[o];
+        if (ob.material != mixture_.phases()[i].material) continue;
+        const scalar s = shapes_.sdf(ob.shape, ob.Q, ob.X, x);
+        if (nearest < 0 || s < d)
+        {
+            nearest = o;
+            d = s;
+        }
+    }
+    return obstacles_[nearest];
 }
 
 

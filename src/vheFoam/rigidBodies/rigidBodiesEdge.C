@@ -1,0 +1,155 @@
+/*---------------------------------------------------------------------------*\
+  vheFoam: rigid bodies -- the edge of a body whose surface is known
+
+  A cell whose centre lies inside the body is held to the body's motion;
+  a fluid cell beside it is not held, but its face to the held cell
+  carries the wall's viscous stress at the wall's true distance: the
+  Laplacian's flux mu |S| (u_N - u_P)/|d| across that face takes the
+  velocity of the held cell's centre, a distance (1 - delta)|d| inside
+  the wall, where the wall stress wants mu |S| (u_N - u_wall)/(delta |d|).
+  The penalty mu |S|/|d| (1/delta - 1) (u_N - u_wall) on the fluid cell
+  makes up the difference, so a linear shear profile beside a wall is
+  exact whatever the wall's position in the cell (a ghost-cell wall
+  written as a penalty).  A weight of the cell's fraction held the body's
+  edge by its volume instead: that sets the body's hydrodynamic radius
+  to first order in the cell size, and a weight that made it right in
+  Stokes flow (min(1, 4 alpha)) was too thick at a Reynolds number of 32
+\*---------------------------------------------------------------------------*/
+
+#include "rigidBodies.H"
+#include "syncTools.H"
+#include "volFields.H"
+#include "surfaceFields.H"
+#include "vhe.h"
+
+const Foam::rigidPoses::body& Foam::rigidBodies::shape
+(
+    const label b,
+    const vector& x
+) const
+{
+    return
+        b < poses_.size()
+      ? poses_[b]
+      : poses_.nearestFixed(bodyPhase_[b], x);
+}
+
+
+Foam::scalar Foam::rigidBodies::sdf(const label b, const vector& x) const
+{
+    const rigidPoses::body& bd = shape(b, x);
+    return poses_.shapes().sdf(bd.shape, bd.Q, bd.X, x);
+}
+
+
+void Foam::rigidBodies::edge()
+{
+    const fvMesh& mesh = mixture_.rho().mesh();
+    const vectorField& C = mesh.C().primitiveField();
+    const label nCells = mesh.nCells();
+
+    hold_ = w_;
+    wallK_.setSize(nCells);
+    wallK_ = 0;
+    if (!shaped_.found(true)) return;
+
+    // The held cells: centres inside the surface
+    scalarField d(nCells, GREAT);
+    forAll(body_, c)
+    {
+        const label b = body_[c];
+        if (b < 0 || !shaped_[b]) continue;
+        d[c] = sdf(b, C[c]);
+        hold_[c] = d[c] < 0 ? 1 : 0;
+    }
+
+    // A fluid cell o beside the held cell i of body b across a face of
+    // area magS, centres |dv| apart
+    const auto wall = [&]
+    (
+        const label o,
+        const label b,
+        const vector& xi,
+        const scalar magS
+    )
+    {
+        if (body_[o] >= 0 && (body_[o] != b || hold_[o] >= 1)) return;
+        const scalar so = body_[o] == b ? d[o] : sdf(b, C[o]);
+        if (so < 0) return;
+        // Where the surface cuts the segment between the centres: the
+        // shape's image nearest the fluid centre (the segment is a cell
+        // long)
+        const rigidPoses::body& bd = shape(b, C[o]);
+        const vector Y
+        (
+            C[o] - poses_.shapes().nearestImage(C[o] - bd.X)
+        );
+        const scalar si = vhe_shape_sdf_posed
+        (
+            &bd.shape, bd.Q.cdata(), Y.cdata(), xi.cdata()
+        );
+        const scalar delta = vhe_shape_crossing
+        (
+            &bd.shape, bd.Q.cdata(), Y.cdata(), C[o].cdata(), xi.cdata(),
+            so, si
+        );
+        wallK_[o] += vhe_wall_coefficient(magS, mag(xi - C[o]), delta);
+        if (body_[o] < 0)
+        {
+            // Beside the body, not of it: weight 0 in its sums
+            body_[o] = b;
+            w_[o] = 0;
+            hold_[o] = 0;
+            d[o] = so;
+        }
+    };
+
+    const labelUList& own = mesh.faceOwner();
+    const labelUList& nei = mesh.faceNeighbour();
+    const scalarField& magSf = mesh.magSf().primitiveField();
+    // The held side of each face as the step began (wall() adds cells)
+    const labelList body0(body_);
+    const scalarField hold0(hold_);
+    const auto held = [&](const label c)
+    {
+        return body0[c] >= 0 && shaped_[body0[c]] && hold0[c] >= 1;
+    };
+    forAll(nei, f)
+    {
+        const label o = own[f], n = nei[f];
+        if (held(o) && !held(n)) wall(n, body0[o], C[o], magSf[f]);
+        if (held(n) && !held(o)) wall(o, body0[n], C[n], magSf[f]);
+    }
+
+    // Across processor and cyclic faces: each side adds its own fluid
+    // cells, from the other side's centres (periodic images in sdf)
+    labelList bodyNbr;
+    scalarList holdNbr;
+    syncTools::swapBoundaryCellList(mesh, body0, bodyNbr);
+    syncTools::swapBoundaryCellList(mesh, hold0, holdNbr);
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& pp = mesh.boundary()[patchi];
+        if (!pp.coupled()) continue;
+        const label start = pp.start() - mesh.nInternalFaces();
+        // The neighbour's centre as seen from this side (delta: from
+        // the cell's centre to its neighbour's, across the transform)
+        const vectorField dn(pp.delta());
+        const scalarField& pMagS = pp.magSf();
+        forAll(pp, i)
+        {
+            const label c = pp.faceCells()[i];
+            const label bn = bodyNbr[start + i];
+            if
+            (
+                bn >= 0 && shaped_[bn] && holdNbr[start + i] >= 1
+             && !held(c)
+            )
+            {
+                wall(c, bn, C[c] + dn[i], pMagS[i]);
+            }
+        }
+    }
+}
+
+// ************************************************************************* //
