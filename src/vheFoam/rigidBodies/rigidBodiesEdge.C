@@ -54,13 +54,11 @@ void Foam::rigidBodies::edge()
     if (!shaped_.found(true)) return;
 
     // The held cells: centres inside the surface
-    scalarField d(nCells, GREAT);
     forAll(body_, c)
     {
         const label b = body_[c];
         if (b < 0 || !shaped_[b]) continue;
-        d[c] = sdf(b, C[c]);
-        hold_[c] = d[c] < 0 ? 1 : 0;
+        hold_[c] = sdf(b, C[c]) < 0 ? 1 : 0;
     }
 
     // A fluid cell o beside the held cell i of body b across a face of
@@ -74,16 +72,20 @@ void Foam::rigidBodies::edge()
     )
     {
         if (body_[o] >= 0 && (body_[o] != b || hold_[o] >= 1)) return;
-        const scalar so = body_[o] == b ? d[o] : sdf(b, C[o]);
-        if (so < 0) return;
         // Where the surface cuts the segment between the centres: the
-        // shape's image nearest the fluid centre (the segment is a cell
-        // long)
+        // shape (of a fixed material, the body nearest the fluid centre)
+        // and its image nearest the fluid centre, found once (the segment
+        // is a cell long)
         const rigidPoses::body& bd = shape(b, C[o]);
         const vector Y
         (
             C[o] - poses_.shapes().nearestImage(C[o] - bd.X)
         );
+        const scalar so = vhe_shape_sdf_posed
+        (
+            &bd.shape, bd.Q.cdata(), Y.cdata(), C[o].cdata()
+        );
+        if (so < 0) return;
         const scalar si = vhe_shape_sdf_posed
         (
             &bd.shape, bd.Q.cdata(), Y.cdata(), xi.cdata()
@@ -100,7 +102,6 @@ void Foam::rigidBodies::edge()
             body_[o] = b;
             w_[o] = 0;
             hold_[o] = 0;
-            d[o] = so;
         }
     };
 
