@@ -66,7 +66,9 @@ sphereTank() {
 # sphere (d 15 mm, rho_s 1120, rigid) at height Y on the axis of a W x H x
 # W box (y up) full of one liquid (RHO kg/m^3, MU Pa s), CELLS_PER_D cells
 # across the sphere, no-slip walls all round (the top too), maxDeltaT
-# 0.005 s, to ENDTIME
+# 0.005 s, to ENDTIME.  Euler and one outer iteration, as the template,
+# unless VHE_DDT (e.g. backward) or VHE_NOUTER (e.g. 2) are set in the
+# environment: a moving body's drag carries both steps' errors (README)
 tenCateSphere() {
     local d=$1 W=$2 H=$3 n=$4 rho=$5 mu=$6 y=$7 tEnd=$8 nx ny
     read -r nx ny <<< "$(python3 -c "n = $n; print(round($W*1000/15*n), round($H*1000/15*n))")"
@@ -78,4 +80,12 @@ tenCateSphere() {
     sphereTank "$d" "$W" "$nx" "$(python3 -c "print($W/2, $y, $W/2)")" || return 1
     sed -i 's/top   { type slip; }/top   { type noSlip; }/' "$d/0/U"
     grep -q "top   { type noSlip; }" "$d/0/U" || { echo "could not close $d's top" >&2; return 1; }
+    if [ -n "${VHE_DDT:-}" ]; then
+        sed -i "s/default Euler;/default $VHE_DDT;/" "$d/system/fvSchemes"
+        grep -q "default $VHE_DDT;" "$d/system/fvSchemes" || { echo "could not set $d's time scheme" >&2; return 1; }
+    fi
+    if [ -n "${VHE_NOUTER:-}" ]; then
+        sed -i "s/nOuterCorrectors    1;/nOuterCorrectors    $VHE_NOUTER;/" "$d/system/fvSolution"
+        grep -q "nOuterCorrectors    $VHE_NOUTER;" "$d/system/fvSolution" || { echo "could not set $d's outer iterations" >&2; return 1; }
+    fi
 }
