@@ -139,7 +139,8 @@ void Foam::rigidBodies::update()
     body_ = -1;
     w_.setSize(nCells);
     w_ = 0;
-    scalarField rhoAlpha(nCells, Zero);
+    rhoAlpha_.setSize(nCells);
+    rhoAlpha_ = 0;
     reached_.setSize(nCells);
     reached_ = 0;
 
@@ -178,7 +179,7 @@ void Foam::rigidBodies::update()
             {
                 w_[c] = wc;
                 body_[c] = b;
-                rhoAlpha[c] = rhoS*alpha[k];
+                rhoAlpha_[c] = rhoS*alpha[k];
             }
         }
         X0.append(poses_[b].X);
@@ -204,7 +205,7 @@ void Foam::rigidBodies::update()
             {
                 w_[c] = wc;
                 body_[c] = nBodies_ + lab[c];
-                rhoAlpha[c] = mixture_.phases()[i].rho*a[c];
+                rhoAlpha_[c] = mixture_.phases()[i].rho*a[c];
             }
         }
         X0.append(regions_.centroid());
@@ -214,20 +215,14 @@ void Foam::rigidBodies::update()
     held_.transfer(held);
     bodyPhase_.transfer(phaseOf);
     shaped_.setSize(nBodies_);
-    // The wall edge (edge()) for the bodies held to a motion (fixed or
-    // prescribed) whose shapes setBodies placed.  Not yet for free ones:
-    // their held cells leave out the solid of their edge cells (alpha
-    // below 1/2), whose weight and inertia the liquid then carries: a
-    // floating box of half the water's density sat 2.2 % of its height
-    // too deep, one of a tenth 22 % of its draft (test_rigid's
-    // floatingDraft, lightFloats), where the weight min(1, 4 alpha) holds
-    // nearly all of a body's solid
+    // The wall edge (edge()) for the bodies whose shapes setBodies placed:
+    // those drawn from their poses (free or prescribed) and those of
+    // fixed materials
     forAll(shaped_, b)
     {
-        shaped_[b] =
-            held_[b]
-         && (b < poses_.size() || poses_.fixedShape(bodyPhase_[b]));
+        shaped_[b] = b < poses_.size() || poses_.fixedShape(bodyPhase_[b]);
     }
+    flowW_ = w_;
     edge();
     heldU_.transfer(heldU);
     heldW_.transfer(heldW);
@@ -241,7 +236,7 @@ void Foam::rigidBodies::update()
     {
         forAll(body_, c)
         {
-            if (body_[c] >= 0) solidMass_[body_[c]] += rhoAlpha[c]*V[c];
+            if (body_[c] >= 0) solidMass_[body_[c]] += rhoAlpha_[c]*V[c];
         }
         bodyRegions::sumLists(solidMass_);
     }

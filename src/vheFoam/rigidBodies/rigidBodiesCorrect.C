@@ -119,7 +119,7 @@ void Foam::rigidBodies::correct(volVectorField& U)
     {
         if
         (
-            body_[c] >= 0 && w_[c] >= 0.1 && reached_[c] == 1
+            body_[c] >= 0 && flowW_[c] >= 0.1 && reached_[c] == 1
          && !nearOther[c]
         )
         {

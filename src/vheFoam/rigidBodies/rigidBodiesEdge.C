@@ -13,7 +13,18 @@
   written as a penalty).  A weight of the cell's fraction held the body's
   edge by its volume instead: that sets the body's hydrodynamic radius
   to first order in the cell size, and a weight that made it right in
-  Stokes flow (min(1, 4 alpha)) was too thick at a Reynolds number of 32
+  Stokes flow (min(1, 4 alpha)) was too thick at a Reynolds number of 32.
+
+  A free body's mass is then its held cells'; the solid outside them (in
+  cells of fraction below about 1/2) would leave its weight, less that of
+  the fluid it displaces, to the fluid cells beside the wall.  The face
+  forces take that weight from those cells and give it to the held cells
+  beside them (edgeDensity(), a change of the density under gravity, so
+  that a cell of the edge weighs as its fluid): without it a floating box
+  of half the water's density sat 2.2 % of its height too deep and one of
+  a tenth 22 % of its draft; given to the body's held cells evenly, not
+  to those beside, the flat light box lost the righting moment of its
+  edge row's buoyancy, tilted and floated 12 % of its draft high
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodies.H"
@@ -21,6 +32,7 @@
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "vhe.h"
+#include <functional>
 
 const Foam::rigidPoses::body& Foam::rigidBodies::shape
 (
@@ -151,6 +163,161 @@ void Foam::rigidBodies::edge()
             }
         }
     }
+
+    // A free body's mass and momentum are its held cells' (correct()
+    // projects those); the weight of its solid outside them is moved to
+    // them by edgeDensity()
+    forAll(body_, c)
+    {
+        const label b = body_[c];
+        if (b >= 0 && shaped_[b] && !held_[b]) w_[c] = hold_[c];
+    }
+}
+
+
+bool Foam::rigidBodies::freeWalls() const
+{
+    bool any = false;
+    forAll(shaped_, b)
+    {
+        if (shaped_[b] && !held_[b]) any = true;
+    }
+    return any;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::rigidBodies::edgeDensity() const
+{
+    const volScalarField& rho = mixture_.rho();
+    const fvMesh& mesh = rho.mesh();
+    tmp<volScalarField> td
+    (
+        new volScalarField
+        (
+            IOobject("rigidEdgeDensity", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedScalar(dimDensity, Zero)
+        )
+    );
+    if (body_.size() != mesh.nCells() || !freeWalls()) return td;
+
+    const label nCells = mesh.nCells();
+    const scalarField& V = mesh.V();
+    scalarField& d = td.ref().primitiveFieldRef();
+    const auto free = [&](const label b)
+    {
+        return b >= 0 && shaped_[b] && !held_[b];
+    };
+
+    // A free body's cell outside its held cells: its solid's mass over
+    // the fluid's it displaces, (rho_s - rho_f) alpha V, rho_f the cell's
+    // fluid density (rho - rho_s alpha)/(1 - alpha), taken out
+    scalarField m(nCells, Zero);
+    forAll(body_, c)
+    {
+        const label b = body_[c];
+        if (!free(b) || hold_[c] >= 1 || rhoAlpha_[c] <= 0) continue;
+        const scalar alpha =
+            rhoAlpha_[c]/mixture_.phases()[bodyPhase_[b]].rho;
+        if (alpha >= 1) continue;
+        const scalar rhoF = (rho[c] - rhoAlpha_[c])/(1 - alpha);
+        const scalar e = rhoAlpha_[c] - alpha*rhoF;
+        m[c] = e*V[c];
+        d[c] = -e;
+    }
+
+    // ... and given to its held neighbours across its faces, evenly, so
+    // that it acts where it was (a flat box floating a cell deep is
+    // righted by its edge row's buoyancy: spread over the whole body, the
+    // box tilted and floated 12 % of its draft high); a cell that touches
+    // the held cells at a corner only gives it to all of them, evenly by
+    // volume
+    const labelUList& own = mesh.faceOwner();
+    const labelUList& nei = mesh.faceNeighbour();
+    labelList bodyNbr;
+    scalarList holdNbr;
+    syncTools::swapBoundaryCellList(mesh, body_, bodyNbr);
+    syncTools::swapBoundaryCellList(mesh, hold_, holdNbr);
+    const label nInternal = mesh.nInternalFaces();
+    const auto heldBy = [&](const label c, const label b)
+    {
+        return body_[c] == b && hold_[c] >= 1;
+    };
+    // Over the faces from an edge cell e to a held cell of its body: on
+    // this rank (h its index) or across a coupled face (bf its boundary
+    // face index)
+    typedef std::function<void(label, label)> visit;
+    const auto edgeFaces = [&](const visit& internal, const visit& coupled)
+    {
+        forAll(nei, f)
+        {
+            const label o = own[f], n = nei[f];
+            if (m[o] != 0 && heldBy(n, body_[o])) internal(o, n);
+            if (m[n] != 0 && heldBy(o, body_[n])) internal(n, o);
+        }
+        forAll(mesh.boundary(), patchi)
+        {
+            const fvPatch& pp = mesh.boundary()[patchi];
+            if (!pp.coupled()) continue;
+            const label start = pp.start() - nInternal;
+            forAll(pp, i)
+            {
+                const label c = pp.faceCells()[i];
+                if
+                (
+                    m[c] != 0 && bodyNbr[start + i] == body_[c]
+                 && holdNbr[start + i] >= 1
+                )
+                {
+                    coupled(c, start + i);
+                }
+            }
+        }
+    };
+    labelList nHeld(nCells, 0);
+    edgeFaces
+    (
+        [&](const label e, const label) { ++nHeld[e]; },
+        [&](const label e, const label) { ++nHeld[e]; }
+    );
+    scalarField gain(nCells, Zero);
+    scalarList across(mesh.nFaces() - nInternal, Zero);
+    edgeFaces
+    (
+        [&](const label e, const label h) { gain[h] += m[e]/nHeld[e]; },
+        [&](const label e, const label bf) { across[bf] = m[e]/nHeld[e]; }
+    );
+    syncTools::swapBoundaryFaceList(mesh, across);
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& pp = mesh.boundary()[patchi];
+        if (!pp.coupled()) continue;
+        const label start = pp.start() - nInternal;
+        forAll(pp, i)
+        {
+            gain[pp.faceCells()[i]] += across[start + i];
+        }
+    }
+    scalarList rest(nBodies_, Zero), heldV(nBodies_, Zero);
+    forAll(body_, c)
+    {
+        const label b = body_[c];
+        if (!free(b)) continue;
+        if (hold_[c] >= 1) heldV[b] += V[c];
+        else if (nHeld[c] == 0) rest[b] += m[c];
+    }
+    bodyRegions::sumLists(rest);
+    bodyRegions::sumLists(heldV);
+    forAll(body_, c)
+    {
+        const label b = body_[c];
+        if (free(b) && hold_[c] >= 1 && heldV[b] > 0)
+        {
+            d[c] = (gain[c] + rest[b]*V[c]/heldV[b])/V[c];
+        }
+    }
+    td.ref().correctBoundaryConditions();
+    return td;
 }
 
 // ************************************************************************* //
