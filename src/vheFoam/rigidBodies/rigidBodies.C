@@ -49,7 +49,8 @@ Foam::rigidBodies::rigidBodies(const vheMixture& mixture)
             return labelList(free);
         }()
     ),
-    nBodies_(0)
+    nBodies_(0),
+    updated_(-1)
 {
     DynamicList<label> rigid;
     const label nPhases = mixture_.phases().size();
@@ -214,6 +215,7 @@ void Foam::rigidBodies::update()
     }
     held_.transfer(held);
     bodyPhase_.transfer(phaseOf);
+    updated_ = mesh.time().timeIndex();
     shaped_.setSize(nBodies_);
     // The wall edge (edge()) for the bodies whose shapes setBodies placed:
     // those drawn from their poses (free or prescribed) and those of

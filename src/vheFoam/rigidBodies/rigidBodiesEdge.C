@@ -199,7 +199,9 @@ Foam::tmp<Foam::volScalarField> Foam::rigidBodies::edgeDensity() const
             dimensionedScalar(dimDensity, Zero)
         )
     );
-    if (body_.size() != mesh.nCells() || !freeWalls()) return td;
+    // None before the step's bodies are found (the acceleration of the
+    // start and of a changed mesh is taken before them)
+    if (updated_ != mesh.time().timeIndex() || !freeWalls()) return td;
 
     const label nCells = mesh.nCells();
     const scalarField& V = mesh.V();
