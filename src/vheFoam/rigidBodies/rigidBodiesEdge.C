@@ -21,11 +21,12 @@
   forces take that weight from those cells and give it to the held cells
   beside them (edgeDensity(), a change of the density under gravity, so
   that a cell of the edge weighs as its fluid; a held body's too, whose
-  holding force then bears all of its solid's weight): without it a floating box
-  of half the water's density sat 2.2 % of its height too deep and one of
-  a tenth 22 % of its draft; given to the body's held cells evenly, not
-  to those beside, the flat light box lost the righting moment of its
-  edge row's buoyancy, tilted and floated 12 % of its draft high
+  holding force then bears all of its solid's weight): without it a
+  floating box of half the water's density sat 2.2 % of its height too
+  deep and one of a tenth 22 % of its draft; given to the body's held
+  cells evenly, not to those beside, the flat light box lost the righting
+  moment of its edge row's buoyancy, tilted and floated 12 % of its draft
+  high
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodies.H"
