@@ -14,6 +14,15 @@ Usage:
                                      volume (phaseVolumes function object)
   floating.py airSpeed CASE TIME     largest speed in pure air (alpha.air
                                      > 0.99) at TIME (ascii fields)
+  floating.py edgePressure CASE TIME W H
+                                     largest |p - p at the wall| over the
+                                     cells of one fluid that hold some of
+                                     the W x H box but whose centres lie
+                                     outside it, against the pure cell of
+                                     that fluid at the left wall in the
+                                     same row, at TIME (2D, nx = ny, a
+                                     1 x 1 m tank; the box's pose from
+                                     the rigidBodies function object)
   floating.py submerged CASE TIME    the body's area below the water level
                                      at the wall against Archimedes', at
                                      TIME (2D, nx = ny, a 1 x 1 m tank)
@@ -84,6 +93,32 @@ def main():
         air = internalField('%s/%s/alpha.air' % (case, time), 'scalar')
         print('%.3g' % max(math.sqrt(sum(c*c for c in u))
                            for u, a in zip(U, air) if a > 0.99))
+    elif what == 'edgePressure':
+        time, W, H = sys.argv[3], float(sys.argv[4]), float(sys.argv[5])
+        f = {k: internalField('%s/%s/%s' % (case, time, k), 'scalar')
+             for k in ('p', 'alpha.block', 'alpha.water', 'alpha.air')}
+        pose = min(table(case + '/postProcessing/rigidBodies/0/poses.dat'),
+                   key=lambda r: abs(r[0] - float(time)))
+        X, Y, angle = pose[2], pose[3], pose[11]
+        n = int(round(math.sqrt(len(f['p']))))
+        dx = 1.0/n
+        worst = 0.0
+        for j in range(n):
+            for i in range(1, n):
+                c = j*n + i
+                if f['alpha.block'][c] <= 0:
+                    continue
+                # the centre in the box's frame
+                x, y = (i + 0.5)*dx - X, (j + 0.5)*dx - Y
+                u = math.cos(angle)*x + math.sin(angle)*y
+                v = -math.sin(angle)*x + math.cos(angle)*y
+                if abs(u) < W/2 and abs(v) < H/2:
+                    continue
+                fluid = 1 - f['alpha.block'][c]
+                for k in ('alpha.water', 'alpha.air'):
+                    if f[k][c] > 0.999*fluid and f[k][j*n] > 0.999:
+                        worst = max(worst, abs(f['p'][c] - f['p'][j*n]))
+        print('%.4g' % worst)
     elif what == 'submerged':
         time = sys.argv[3]
         a = internalField('%s/%s/alpha.block' % (case, time), 'scalar')

@@ -85,6 +85,15 @@ check floatingDraft "abs($draft - $exact) < 0.005*0.1" \
     "draft $draft m, Archimedes $exact m (height 0.1 m)"
 drift=$(python3 "$TESTS_DIR/floating.py" volumes "$fl")
 check floatingVolumes "$drift < 1e-6" "largest relative phase volume drift $drift"
+# The written p where the box's edge is in air or water (cells with some of
+# the box, centres outside it) is the fluid's, as at the wall in the same
+# row: p = p_rgh + (rho + the edge density) g h.  Bound: 2 % of rho_w g H,
+# H the box's height (measured 6.7 Pa in the water beside the box, which
+# still heaves at 3 mm/s; the air above it 0.3 Pa); with rho g h alone the
+# air cells on its top were off by 820 Pa
+dp=$(python3 "$TESTS_DIR/floating.py" edgePressure "$fl" 3 0.3 0.1)
+check floatingEdgePressure "$dp < 0.02*1000*9.81*0.1" \
+    "largest |p - p at the wall| in the box's edge cells $dp Pa"
 
 # A light rigid box (rho_s 100, a tenth of the water's), the same box
 # released 0.2 m under the surface: it rises through the surface and
