@@ -69,12 +69,25 @@ void vhe_polygon_fan(int np, const double *p, double m[3], double S[3])
     S[0] = 0.5 * sx; S[1] = 0.5 * sy; S[2] = 0.5 * sz;
 }
 
-int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
-                 struct vhe_cut *out)
+/* The cut's edge segments (a cut's own, for its centre) */
+struct cut_segments {
+    int n;
+    double s[VHE_CUT_MAXSEG][2][3];
+};
+
+/* The part where f > iso: status, volume and area (its centre is
+ * cut_centre's, from the segments kept in sg).  The cut closes the part
+ * as the fan of its segments about their mean point m; each of the fan's
+ * triangles has (c - m).S = 0, so with the faces' shares taken about x0
+ * the cut's share of 3 x the volume is (m - x0).A: no centre needed (the
+ * exact volume of the polyhedron the fans bound; for a plane cut m and
+ * the centre are both on the plane and give the same) */
+static int cut_part(const struct vhe_cell *cell, const double *f, double iso,
+                    struct vhe_cut *out, struct cut_segments *sg)
 {
     double S_sub[3] = {0.0, 0.0, 0.0};  /* submerged faces' area vector */
     double vol3 = 0.0;                  /* 3 x volume, about x0 */
-    double seg[VHE_CUT_MAXSEG][2][3];   /* the cut's edge segments */
+    double (*seg)[2][3] = sg->s;        /* the cut's edge segments */
     int nseg = 0, nsub = 0, k;
     const double *x0 = cell->x0, *X = cell->x;
 
@@ -149,6 +162,7 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
         }
     }
 
+    sg->n = nseg;
     if (nsub == 0) {
         out->status = 1;                 /* all above: nothing where f > iso */
         return 0;
@@ -170,49 +184,79 @@ int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
      * serial; not on 2 ranks, whose point values differed in the last
      * digit). */
 
-    /* the cut's centre: its segments' fan about their mean point, each
-     * triangle's area signed along the cut's area vector */
     {
-        double mean[3] = {0.0, 0.0, 0.0}, sumA = 0.0, sumAc[3] = {0.0, 0.0, 0.0};
-        double nhat[3], ciso[3];
-        const double m = sqrt(dot3(out->area, out->area));
+        double m[3] = {0.0, 0.0, 0.0};
         const double h = 0.5 / nseg;
         int i, j;
         for (i = 0; i < nseg; ++i) {
             for (j = 0; j < 3; ++j) {
-                mean[j] += (seg[i][0][j] + seg[i][1][j]) * h;
+                m[j] += (seg[i][0][j] + seg[i][1][j]) * h;
             }
         }
         for (j = 0; j < 3; ++j) {
-            nhat[j] = m > 0.0 ? out->area[j] / m : 0.0;
+            m[j] -= x0[j];
         }
-        for (i = 0; i < nseg; ++i) {
-            double e1[3], e2[3], n[3], a;
-            sub3(seg[i][0], mean, e1);
-            sub3(seg[i][1], mean, e2);
-            cross3(e1, e2, n);
-            a = fabs(dot3(n, nhat));
-            sumA += a;
-            for (j = 0; j < 3; ++j) {
-                sumAc[j] += a * (seg[i][0][j] + seg[i][1][j] + mean[j]);
-            }
-        }
-        for (j = 0; j < 3; ++j) {
-            out->centre[j] = sumA > 0.0 ? sumAc[j] / (3.0 * sumA) : mean[j];
-            ciso[j] = out->centre[j] - x0[j];
-        }
-        vol3 += dot3(ciso, out->area);
+        vol3 += dot3(m, out->area);
     }
     out->status = 0;
     out->volume = vol3 / 3.0;
     return 0;
 }
 
+/* The cut's centre: its segments' fan about their mean point, each
+ * triangle's area signed along the cut's area vector (isoCutCell's) */
+static void cut_centre(const struct cut_segments *sg, struct vhe_cut *out)
+{
+    double mean[3] = {0.0, 0.0, 0.0}, sumA = 0.0, sumAc[3] = {0.0, 0.0, 0.0};
+    double nhat[3];
+    const double m = sqrt(dot3(out->area, out->area));
+    const int nseg = sg->n;
+    const double h = 0.5 / nseg;
+    int i, j;
+    if (out->status != 0 || nseg == 0) {
+        return;
+    }
+    for (i = 0; i < nseg; ++i) {
+        for (j = 0; j < 3; ++j) {
+            mean[j] += (sg->s[i][0][j] + sg->s[i][1][j]) * h;
+        }
+    }
+    for (j = 0; j < 3; ++j) {
+        nhat[j] = m > 0.0 ? out->area[j] / m : 0.0;
+    }
+    for (i = 0; i < nseg; ++i) {
+        double e1[3], e2[3], n[3], a;
+        sub3(sg->s[i][0], mean, e1);
+        sub3(sg->s[i][1], mean, e2);
+        cross3(e1, e2, n);
+        a = fabs(dot3(n, nhat));
+        sumA += a;
+        for (j = 0; j < 3; ++j) {
+            sumAc[j] += a * (sg->s[i][0][j] + sg->s[i][1][j] + mean[j]);
+        }
+    }
+    for (j = 0; j < 3; ++j) {
+        out->centre[j] = sumA > 0.0 ? sumAc[j] / (3.0 * sumA) : mean[j];
+    }
+}
+
+int vhe_cell_cut(const struct vhe_cell *cell, const double *f, double iso,
+                 struct vhe_cut *out)
+{
+    struct cut_segments sg;
+    const int r = cut_part(cell, f, iso, out, &sg);
+    if (r == 0) {
+        cut_centre(&sg, out);
+    }
+    return r;
+}
+
 /* The fraction of the cell where f > iso */
 static double fraction(const struct vhe_cell *cell, const double *f,
-                       double iso, double V, struct vhe_cut *out)
+                       double iso, double V, struct vhe_cut *out,
+                       struct cut_segments *sg)
 {
-    vhe_cell_cut(cell, f, iso, out);
+    cut_part(cell, f, iso, out, sg);
     return out->status == -1 ? 1.0 : out->status == 1 ? 0.0 : out->volume / V;
 }
 
@@ -224,6 +268,7 @@ static int newton(const struct vhe_cell *cell, const double *f, double V,
                   struct vhe_cut *out)
 {
     double lo = f[0], hi = f[0];
+    struct cut_segments sg;
     int i, it;
     for (i = 1; i < cell->npoints; ++i) {
         lo = f[i] < lo ? f[i] : lo;
@@ -233,10 +278,11 @@ static int newton(const struct vhe_cell *cell, const double *f, double V,
         x = lo + (1.0 - alpha) * (hi - lo);
     }
     for (it = 0; it < 60; ++it) {
-        const double r = fraction(cell, f, x, V, out) - alpha;
+        const double r = fraction(cell, f, x, V, out, &sg) - alpha;
         const double A = sqrt(dot3(out->area, out->area));
         double xn;
         if (fabs(r) <= tol) {
+            cut_centre(&sg, out);
             out->volume = r + alpha;
             return 0;
         }
@@ -256,6 +302,7 @@ int vhe_cell_cut_fraction(const struct vhe_cell *cell, const double *f,
                           double guess, struct vhe_cut *out)
 {
     double fs[VHE_CUT_MAXP], lo, hi, alo, ahi;
+    struct cut_segments sg;
     int n = cell->npoints, i, j, L, H, it;
 
     if (n > VHE_CUT_MAXP || n < 4 || !(V > 0.0)) {
@@ -278,13 +325,14 @@ int vhe_cell_cut_fraction(const struct vhe_cell *cell, const double *f,
     while (H - L > 1) {
         const int M = (L + H) / 2;
         double a;
-        vhe_cell_cut(cell, f, fs[M], out);
+        cut_part(cell, f, fs[M], out, &sg);
         a = out->status == -1 ? 1.0 : out->volume / V;
         if (a > alpha) {
             L = M; alo = a;
         } else if (a < alpha) {
             H = M; ahi = a;
         } else {
+            cut_centre(&sg, out);
             out->volume /= V;
             return 0;
         }
@@ -302,7 +350,7 @@ int vhe_cell_cut_fraction(const struct vhe_cell *cell, const double *f,
         double t[4] = {0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0}, a[4], c[4], x, r;
         a[0] = alo; a[3] = ahi;
         for (i = 1; i <= 2; ++i) {
-            vhe_cell_cut(cell, f, lo + t[i] * (hi - lo), out);
+            cut_part(cell, f, lo + t[i] * (hi - lo), out, &sg);
             a[i] = out->status == -1 ? 1.0
                  : out->status == 1 ? 0.0 : out->volume / V;
         }
@@ -339,11 +387,12 @@ int vhe_cell_cut_fraction(const struct vhe_cell *cell, const double *f,
             int side = 0;
             for (it = 0; it < 100; ++it) {
                 double frac;
-                vhe_cell_cut(cell, f, lo + x * (hi - lo), out);
+                cut_part(cell, f, lo + x * (hi - lo), out, &sg);
                 frac = out->status == -1 ? 1.0
                      : out->status == 1 ? 0.0 : out->volume / V;
                 r = frac - alpha;
                 if (fabs(r) <= tol) {
+                    cut_centre(&sg, out);
                     out->volume = frac;
                     return 0;
                 }

@@ -8,7 +8,6 @@
 #include "upwind.H"
 #include "syncTools.H"
 #include "fvc.H"
-#include "interpolationCellPoint.H"
 #include "profiling.H"
 #include "vhe.h"
 #include "vheFlat.H"
@@ -77,7 +76,7 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
 (
     volScalarField& alpha,
     const surfaceScalarField& phi,
-    const interpolationCellPoint<vector>& UInterp
+    const volVectorField& U
 )
 {
     addProfiling(iso, "vheMixture::isoAdvection");
@@ -112,6 +111,46 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     {
         surface[c] = a[c] > surfCellTol && a[c] < 1 - surfCellTol;
     }
+    // The velocity at a point x of cell c: U_c + (x - C_c).grad U, the
+    // cell's Gauss gradient of the linearly interpolated face values
+    // (exact for a linear field, as the cell-point interpolation)
+    const vectorField& Uc = U.primitiveField();
+    const scalarField& w = mesh.weights().primitiveField();
+    const vectorField& Sf = mesh.Sf().primitiveField();
+    // (a coupled face's value from its two cells, as an internal face's: a
+    // processor patch holds the neighbour cells' values)
+    List<vectorField> faceU(patches.size());
+    forAll(patches, patchi)
+    {
+        const fvPatchVectorField& Up = U.boundaryField()[patchi];
+        if (!Up.coupled())
+        {
+            faceU[patchi] = Up;
+            continue;
+        }
+        const scalarField& wp = mesh.weights().boundaryField()[patchi];
+        faceU[patchi] =
+            wp*Up.patchInternalField() + (1 - wp)*Up.patchNeighbourField();
+    }
+    auto velocityAt = [&](const label c, const point& x)
+    {
+        tensor g(Zero);
+        for (const label f : mesh.cells()[c])
+        {
+            if (f < nInt)
+            {
+                const vector Uf = w[f]*Uc[own[f]] + (1 - w[f])*Uc[nei[f]];
+                g += (own[f] == c ? Sf[f] : -Sf[f])*Uf;
+                continue;
+            }
+            const label patchi = patches.whichPatch(f);
+            const fvPatchVectorField& Up = U.boundaryField()[patchi];
+            if (Up.empty()) continue;
+            const label i = f - patches[patchi].start();
+            g += mesh.Sf().boundaryField()[patchi][i]*faceU[patchi][i];
+        }
+        return vector(Uc[c] + ((x - mesh.C()[c]) & g)/mesh.V()[c]);
+    };
     // The volume the cell's plane, moving with the velocity at its centre,
     // carries through a downwind face over the step (C core)
     DynamicList<point> fx;
@@ -134,7 +173,7 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
         const label c = planes.cells()[pi];
         const point& x0 = planes.centre()[pi];
         const vector& n0 = planes.normal()[pi];
-        const scalar Un0 = UInterp.interpolate(x0, c) & n0;
+        const scalar Un0 = velocityAt(c, x0) & n0;
 
         for (const label f : mesh.cells()[c])
         {

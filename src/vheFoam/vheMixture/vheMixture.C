@@ -379,9 +379,24 @@ Foam::tmp<Foam::volScalarField> Foam::vheMixture::nearInterface() const
             dimensionedScalar(dimless, Zero)
         )
     );
+    // 1 where some fraction is in [0.01, 0.99] (one pass per phase: the
+    // field expression made five temporaries of every phase, a run's
+    // spare colours included)
+    const auto mark = [](scalarField& near, const scalarField& a)
+    {
+        forAll(near, i)
+        {
+            if (a[i] >= 0.01 && a[i] <= 0.99) near[i] = 1;
+        }
+    };
+    volScalarField& near = tnear.ref();
     for (const volScalarField& a : alphas_)
     {
-        tnear.ref() = max(tnear(), pos0(a - 0.01)*pos0(0.99 - a));
+        mark(near.primitiveFieldRef(), a.primitiveField());
+        forAll(near.boundaryField(), patchi)
+        {
+            mark(near.boundaryFieldRef()[patchi], a.boundaryField()[patchi]);
+        }
     }
     return tnear;
 }
@@ -410,24 +425,28 @@ Foam::tmp<Foam::volScalarField> Foam::vheMixture::interfaceIndicator() const
 }
 
 
-Foam::scalar Foam::vheMixture::phaseVolume(const label i) const
-{
-    if (alphas_.empty()) return gSum(mesh_.V());
-    return gSum(mesh_.V()*alphas_[i].primitiveField());
-}
-
-
 void Foam::vheMixture::report() const
 {
+    const scalarField& V = mesh_.V();
     forAll(alphas_, i)
     {
-        const volScalarField& a = alphas_[i];
+        // volume, min and max in one pass
+        const scalarField& a = alphas_[i].primitiveField();
+        scalar vol = 0, lo = VGREAT, hi = -VGREAT;
+        forAll(a, c)
+        {
+            vol += V[c]*a[c];
+            lo = min(lo, a[c]);
+            hi = max(hi, a[c]);
+        }
+        reduce(vol, sumOp<scalar>());
+        reduce(lo, minOp<scalar>());
+        reduce(hi, maxOp<scalar>());
         // Volumes to 15 digits: conservation is checked to 1e-6 and below
         Info<< "Phase " << phases_[i].name
-            << " volume " << setprecision(15) << phaseVolume(i)
+            << " volume " << setprecision(15) << vol
             << setprecision(IOstream::defaultPrecision())
-            << "  fraction min, max = " << gMin(a.primitiveField())
-            << ' ' << gMax(a.primitiveField()) << nl;
+            << "  fraction min, max = " << lo << ' ' << hi << nl;
     }
 }
 

@@ -307,12 +307,11 @@ void Foam::vheMixture::solveGeometric
     );
     if (solidList.size())
     {
-        const interpolationCellPoint<vector> UInterp(U_);
         for (const label i : solidList)
         {
             alphaPhis.set
             (
-                i, solidAdvection::advect(t.fields[i], phi_, UInterp).ptr()
+                i, solidAdvection::advect(t.fields[i], phi_, U_).ptr()
             );
         }
     }

@@ -243,12 +243,19 @@ void Foam::vheMixture::solve()
     forAll(alphas_, i)
     {
         const volScalarField& a = alphas_[i];
-        scalar m = gMax(mag(a.primitiveField())());
+        bool any = false;
+        for (const scalar v : a.primitiveField())
+        {
+            if (v != 0) { any = true; break; }
+        }
         for (const fvPatchScalarField& pf : a.boundaryField())
         {
-            if (pf.size()) m = max(m, max(mag(pf)));
+            for (const scalar v : pf)
+            {
+                if (v != 0) { any = true; break; }
+            }
         }
-        if (returnReduce(m, maxOp<scalar>()) > 0) act.append(i);
+        if (returnReduce(any, orOp<bool>())) act.append(i);
     }
     const labelList active(act);
     // Two phases need no re-limiting: their corrections are exact opposites
