@@ -12,6 +12,7 @@
 #include "extrapolatedCalculatedFvPatchFields.H"
 #include "vhe.h"
 #include "vheFlat.H"
+#include "linearFaceValues.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -205,20 +206,7 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::divSigma
         const fvPatch& p = mesh_.boundary()[patchi];
         const fvPatchSymmTensorField& Sb = sig.boundaryField()[patchi];
         if (!p.size() || !Sb.size()) continue;
-        // the linear interpolation's face value: both sides' cells on a
-        // coupled patch, the patch value elsewhere
-        const symmTensorField Sp
-        (
-            p.coupled()
-          ? symmTensorField
-            (
-                mesh_.weights().boundaryField()[patchi]
-               *Sb.patchInternalField()
-              + (1 - mesh_.weights().boundaryField()[patchi])
-               *Sb.patchNeighbourField()
-            )
-          : symmTensorField(Sb)
-        );
+        const symmTensorField Sp(linearFaceValues(Sb));
         const labelUList& fc = p.faceCells();
         const vectorField& pSf = p.Sf();
         forAll(fc, i)
@@ -330,22 +318,7 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::explicitDiffusion
         const fvPatch& p = mesh_.boundary()[patchi];
         const fvPatchScalarField& mub = muEl.boundaryField()[patchi];
         if (!p.size() || !mub.size()) continue;
-        // The face's viscosity as the linear interpolation's: on coupled
-        // patches from the cells on both sides (not the patch value, the
-        // product of the interpolated Ghat and phi_s), elsewhere the
-        // patch value
-        const scalarField mup
-        (
-            p.coupled()
-          ? scalarField
-            (
-                mesh_.weights().boundaryField()[patchi]
-               *mub.patchInternalField()
-              + (1 - mesh_.weights().boundaryField()[patchi])
-               *mub.patchNeighbourField()
-            )
-          : scalarField(mub)
-        );
+        const scalarField mup(linearFaceValues(mub));
         if (max(mag(mup)) == 0) continue;   // (each rank its own patches)
         const fvPatchVectorField& Up = U.boundaryField()[patchi];
         vectorField g
@@ -361,13 +334,8 @@ Foam::tmp<Foam::volVectorField> Foam::vheElasticity::explicitDiffusion
         );
         if (correct && p.coupled())
         {
-            const fvPatchTensorField& Gp = tgradU().boundaryField()[patchi];
-            const scalarField& wp = mesh_.weights().boundaryField()[patchi];
             g += mesh_.nonOrthCorrectionVectors().boundaryField()[patchi]
-               & (
-                     wp*Gp.patchInternalField()
-                   + (1 - wp)*Gp.patchNeighbourField()
-                 );
+               & linearFaceValues(tgradU().boundaryField()[patchi]);
         }
         const labelUList& fc = p.faceCells();
         const scalarField& pMagSf = p.magSf();

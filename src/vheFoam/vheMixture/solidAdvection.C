@@ -11,6 +11,7 @@
 #include "profiling.H"
 #include "vhe.h"
 #include "vheFlat.H"
+#include "linearFaceValues.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -117,20 +118,11 @@ Foam::tmp<Foam::surfaceScalarField> Foam::solidAdvection::advect
     const vectorField& Uc = U.primitiveField();
     const scalarField& w = mesh.weights().primitiveField();
     const vectorField& Sf = mesh.Sf().primitiveField();
-    // (a coupled face's value from its two cells, as an internal face's: a
-    // processor patch holds the neighbour cells' values)
+    // (a coupled face's value from its two cells, as an internal face's)
     List<vectorField> faceU(patches.size());
     forAll(patches, patchi)
     {
-        const fvPatchVectorField& Up = U.boundaryField()[patchi];
-        if (!Up.coupled())
-        {
-            faceU[patchi] = Up;
-            continue;
-        }
-        const scalarField& wp = mesh.weights().boundaryField()[patchi];
-        faceU[patchi] =
-            wp*Up.patchInternalField() + (1 - wp)*Up.patchNeighbourField();
+        faceU[patchi] = linearFaceValues(U.boundaryField()[patchi]);
     }
     auto velocityAt = [&](const label c, const point& x)
     {
