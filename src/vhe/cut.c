@@ -91,6 +91,8 @@ static int cut_part(const struct vhe_cell *cell, const double *f, double iso,
     int nseg = 0, nsub = 0, k;
     const double *x0 = cell->x0, *X = cell->x;
 
+    sg->n = 0;
+
     out->iso = iso;
     out->volume = 0.0;
     for (k = 0; k < 3; ++k) {
@@ -208,14 +210,14 @@ static int cut_part(const struct vhe_cell *cell, const double *f, double iso,
 static void cut_centre(const struct cut_segments *sg, struct vhe_cut *out)
 {
     double mean[3] = {0.0, 0.0, 0.0}, sumA = 0.0, sumAc[3] = {0.0, 0.0, 0.0};
-    double nhat[3];
-    const double m = sqrt(dot3(out->area, out->area));
+    double nhat[3], m, h;
     const int nseg = sg->n;
-    const double h = 0.5 / nseg;
     int i, j;
-    if (out->status != 0 || nseg == 0) {
-        return;
+    if (nseg == 0 || out->status != 0) {
+        return;                          /* no cut: no centre (0) */
     }
+    m = sqrt(dot3(out->area, out->area));
+    h = 0.5 / nseg;
     for (i = 0; i < nseg; ++i) {
         for (j = 0; j < 3; ++j) {
             mean[j] += (sg->s[i][0][j] + sg->s[i][1][j]) * h;
