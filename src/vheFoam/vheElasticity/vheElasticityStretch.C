@@ -7,6 +7,7 @@
 #include "fvc.H"
 #include "vhe.h"
 #include "vheFlat.H"
+#include "linearFaceValues.H"
 #include "syncTools.H"
 
 #include <functional>
@@ -63,18 +64,8 @@ Foam::tmp<Foam::tensorField> Foam::vheElasticity::solidVelocityGradient
         const labelUList& fc = p.faceCells();
         const vectorField& Sp = mesh_.Sf().boundaryField()[patchi];
         const scalarField& phip = phi.boundaryField()[patchi];
-        // linear interpolation across a coupled patch, else the boundary
-        // value (fvc::interpolate's)
-        const vectorField uf
-        (
-            Up.coupled()
-          ? vectorField
-            (
-                p.weights()*Up.patchInternalField()
-              + (1 - p.weights())*Up.patchNeighbourField()
-            )
-          : vectorField(Up)
-        );
+        // fvc::interpolate's face values
+        const vectorField uf(linearFaceValues(Up));
         forAll(fc, i)
         {
             const label o = index[fc[i]];
