@@ -133,9 +133,45 @@ void Foam::interfacePlanes::rdfNormals(List<vector>& nNew) const
 }
 
 
+void Foam::interfacePlanes::addRow(const label c)
+{
+    // Its points, and its faces in local point indices, flipped where the
+    // cell is the face's neighbour
+    const labelList& cp = mesh_.cellPoints()[c];
+    xStart_.append(x_.size());
+    x_.append(UIndirectList<point>(mesh_.points(), cp));
+    const cell& faces = mesh_.cells()[c];
+    startRow_.append(start_.size());
+    ptsRow_.append(facePts_.size());
+    const label p0 = facePts_.size();
+    forAll(faces, k)
+    {
+        const label f = faces[k];
+        start_.append(facePts_.size() - p0);
+        flip_.append(mesh_.faceOwner()[f] != c);
+        for (const label p : mesh_.faces()[f])
+        {
+            facePts_.append(cp.find(p));
+        }
+    }
+    start_.append(facePts_.size() - p0);
+    flip_.append(0);
+}
+
+
+void Foam::interfacePlanes::removeRow()
+{
+    x_.setSize(xStart_.remove());
+    const label s = startRow_.remove();
+    start_.setSize(s);
+    flip_.setSize(s);
+    facePts_.setSize(ptsRow_.remove());
+}
+
+
 bool Foam::interfacePlanes::cutCell
 (
-    const label c,
+    const label i,
     const scalar alpha,
     const scalar tol,
     const scalar g,
@@ -143,33 +179,20 @@ bool Foam::interfacePlanes::cutCell
     vhe_cut& out
 ) const
 {
-    // The cell for the C core: its points, and its faces in local point
-    // indices, flipped where the cell is the face's neighbour
-    const labelList& cp = mesh_.cellPoints()[c];
-    x_ = UIndirectList<point>(mesh_.points(), cp);
-    const cell& faces = mesh_.cells()[c];
-    start_.setSize(faces.size() + 1);
-    flip_.setSize(faces.size());
-    facePts_.clear();
-    forAll(faces, k)
-    {
-        const label f = faces[k];
-        start_[k] = facePts_.size();
-        flip_[k] = mesh_.faceOwner()[f] != c;
-        for (const label p : mesh_.faces()[f])
-        {
-            facePts_.append(cp.find(p));
-        }
-    }
-    start_[faces.size()] = facePts_.size();
+    const label c = cells_[i];
+    const label s = startRow_[i];
+    const label np =
+        (i + 1 < xStart_.size() ? xStart_[i + 1] : x_.size()) - xStart_[i];
+    const label nf =
+        (i + 1 < startRow_.size() ? startRow_[i + 1] : start_.size()) - s - 1;
 
     vhe_cell cellC;
-    cellC.npoints = cp.size();
-    cellC.x = flat(x_);
-    cellC.nfaces = faces.size();
-    cellC.face_start = start_.cdata();
-    cellC.face_pts = facePts_.cdata();
-    cellC.flip = flip_.cdata();
+    cellC.npoints = np;
+    cellC.x = flat(x_) + 3*xStart_[i];
+    cellC.nfaces = nf;
+    cellC.face_start = start_.cdata() + s;
+    cellC.face_pts = facePts_.cdata() + ptsRow_[i];
+    cellC.flip = flip_.cdata() + s;
     const point& C = mesh_.C()[c];
     cellC.x0[0] = C.x();
     cellC.x0[1] = C.y();
@@ -199,7 +222,7 @@ void Foam::interfacePlanes::cutPlanes
         fCell_.setSize(mesh_.cellPoints()[c].size());
         planeValues(c, n[i], fCell_);
         // from the last plane's centre (Newton: the field is a plane)
-        if (!cutCell(c, a[c], isoTol, 1, -(n[i] & (centre_[i] - C)), out))
+        if (!cutCell(i, a[c], isoTol, 1, -(n[i] & (centre_[i] - C)), out))
         {
             continue;
         }
@@ -247,10 +270,16 @@ Foam::interfacePlanes::interfacePlanes
             {
                 fCell_[j] = interpolated[cp[j]];
             }
-            if (!cutCell(c, a[c], isoTol, 0, 0, out)) continue;
-            const vector A(out.area[0], out.area[1], out.area[2]);
-            if (mag(A) < VSMALL) continue;
             cells_.append(c);
+            addRow(c);
+            const bool cut = cutCell(cells_.size() - 1, a[c], isoTol, 0, 0, out);
+            const vector A(out.area[0], out.area[1], out.area[2]);
+            if (!cut || mag(A) < VSMALL)
+            {
+                cells_.remove();
+                removeRow();
+                continue;
+            }
             normal_.append(A/mag(A));
             centre_.append(point(out.centre[0], out.centre[1], out.centre[2]));
         }
