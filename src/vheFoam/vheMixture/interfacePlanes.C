@@ -272,7 +272,8 @@ Foam::interfacePlanes::interfacePlanes
             }
             cells_.append(c);
             addRow(c);
-            const bool cut = cutCell(cells_.size() - 1, a[c], isoTol, 0, 0, out);
+            const bool cut =
+                cutCell(cells_.size() - 1, a[c], isoTol, 0, 0, out);
             const vector A(out.area[0], out.area[1], out.area[2]);
             if (!cut || mag(A) < VSMALL)
             {
