@@ -11,20 +11,26 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
-void Foam::interfacePlanes::planeValues
+Foam::SubList<Foam::point> Foam::interfacePlanes::rowPoints
 (
-    const label c,
-    const vector& n,
-    UList<scalar>& f
+    const label i
 ) const
 {
+    const label end = i + 1 < xStart_.size() ? xStart_[i + 1] : x_.size();
+    return SubList<point>(x_, end - xStart_[i], xStart_[i]);
+}
+
+
+void Foam::interfacePlanes::planeValues(const label i, const vector& n)
+    const
+{
     // Rises into the fraction, as the interpolated fraction does
-    const point& C = mesh_.C()[c];
-    const pointField& pts = mesh_.points();
-    const labelList& cp = mesh_.cellPoints()[c];
-    forAll(cp, j)
+    const point& C = mesh_.C()[cells_[i]];
+    const SubList<point> x(rowPoints(i));
+    fCell_.setSize(x.size());
+    forAll(x, j)
     {
-        f[j] = -(n & (pts[cp[j]] - C));
+        fCell_[j] = -(n & (x[j] - C));
     }
 }
 
@@ -181,14 +187,13 @@ bool Foam::interfacePlanes::cutCell
 {
     const label c = cells_[i];
     const label s = startRow_[i];
-    const label np =
-        (i + 1 < xStart_.size() ? xStart_[i + 1] : x_.size()) - xStart_[i];
     const label nf =
         (i + 1 < startRow_.size() ? startRow_[i + 1] : start_.size()) - s - 1;
 
     vhe_cell cellC;
-    cellC.npoints = np;
-    cellC.x = flat(x_) + 3*xStart_[i];
+    const SubList<point> x(rowPoints(i));
+    cellC.npoints = x.size();
+    cellC.x = flat(x);
     cellC.nfaces = nf;
     cellC.face_start = start_.cdata() + s;
     cellC.face_pts = facePts_.cdata() + ptsRow_[i];
@@ -219,8 +224,7 @@ void Foam::interfacePlanes::cutPlanes
     {
         const label c = cells_[i];
         const point& C = mesh_.C()[c];
-        fCell_.setSize(mesh_.cellPoints()[c].size());
-        planeValues(c, n[i], fCell_);
+        planeValues(i, n[i]);
         // from the last plane's centre (Newton: the field is a plane)
         if (!cutCell(i, a[c], isoTol, 1, -(n[i] & (centre_[i] - C)), out))
         {
