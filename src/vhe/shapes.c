@@ -11,6 +11,8 @@
 /* Deepest refinement vhe_shape_fraction honours (2^-24 of a cell edge is
  * far below any use; the bound sizes the explicit stack). */
 #define VHE_FRACTION_DEPTH_CAP 24
+/* levels a smooth shape's second-order leaf saves (vhe_shape_fraction) */
+#define SMOOTH_LEVELS 3
 
 static int finite3(const double *v)
 {
@@ -57,13 +59,14 @@ static void unit_axis(const struct vhe_shape *s, double a[3])
     a[2] = s->axis[2] / n;
 }
 
-double vhe_shape_sdf(const struct vhe_shape *s, const double x[3])
+/* The distance bound of a checked shape; a: its unit axis (unit_axis),
+ * used by a cylinder only.  The sub-cell integration below calls it for
+ * every sub-box: the check and the axis are its caller's, once. */
+static double sdf_checked(const struct vhe_shape *s, const double a[3],
+                          const double x[3])
 {
     double d[3];
 
-    if (vhe_shape_check(s) != VHE_OK) {
-        return HUGE_VAL;   /* an invalid shape contains nothing */
-    }
     d[0] = x[0] - s->centre[0];
     d[1] = x[1] - s->centre[1];
     d[2] = x[2] - s->centre[2];
@@ -73,8 +76,7 @@ double vhe_shape_sdf(const struct vhe_shape *s, const double x[3])
         return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - s->radius;
 
     case VHE_CYLINDER: {
-        double a[3], t, r[3], rho, dr, da;
-        unit_axis(s, a);
+        double t, r[3], rho, dr, da;
         t = d[0] * a[0] + d[1] * a[1] + d[2] * a[2];
         r[0] = d[0] - t * a[0];
         r[1] = d[1] - t * a[1];
@@ -117,6 +119,18 @@ double vhe_shape_sdf(const struct vhe_shape *s, const double x[3])
     default:
         return HUGE_VAL;
     }
+}
+
+double vhe_shape_sdf(const struct vhe_shape *s, const double x[3])
+{
+    double a[3] = {0.0, 0.0, 1.0};
+    if (vhe_shape_check(s) != VHE_OK) {
+        return HUGE_VAL;   /* an invalid shape contains nothing */
+    }
+    if (s->kind == VHE_CYLINDER) {
+        unit_axis(s, a);
+    }
+    return sdf_checked(s, a, x);
 }
 
 double vhe_shape_volume(const struct vhe_shape *s)
@@ -319,6 +333,132 @@ void vhe_shape_bounds_posed(const struct vhe_shape *s, const double Q[9],
     }
 }
 
+/* A smooth shape's leaf: the part of the box [c - he, c + he] where the
+ * shape's distance bound, linear along each edge, is negative (the C
+ * core's cell cut at the corner values), taken on the box and on its 2^nd
+ * halves from one grid of 3^nd values, the two extrapolated by their error
+ * ratio: a cut's error is its chords' sagitta, h^2 times the curvature
+ * over the surface in the box, so it falls by 4 a level whatever nd is.
+ * (4 fine - coarse)/3 clamped to [0, 1].  In 2D the box keeps its depth
+ * and its corners' values along z are the mid plane's. */
+static const int box_face_start[7] = {0, 4, 8, 12, 16, 20, 24};
+static const int box_face_pts[24] = {0, 4, 6, 2, 1, 3, 7, 5, 0, 1, 5, 4,
+                                     2, 6, 7, 3, 0, 2, 3, 1, 4, 5, 7, 6};
+static const unsigned char box_flip[6] = {0, 0, 0, 0, 0, 0};
+
+static double box_cut(const double c[3], const double he[3],
+                      const double f[8])
+{
+    double x[24];
+    struct vhe_cell cell;
+    struct vhe_cut out;
+    int k, d, in = 0;
+    for (k = 0; k < 8; ++k) {
+        in += f[k] > 0.0;
+    }
+    if (in == 0 || in == 8) {
+        return in == 8 ? 1.0 : 0.0;
+    }
+    for (k = 0; k < 8; ++k) {
+        for (d = 0; d < 3; ++d) {
+            x[3 * k + d] = c[d] + ((k >> d) & 1 ? he[d] : -he[d]);
+        }
+    }
+    cell.npoints = 8;
+    cell.x = x;
+    cell.nfaces = 6;
+    cell.face_start = box_face_start;
+    cell.face_pts = box_face_pts;
+    cell.flip = box_flip;
+    for (d = 0; d < 3; ++d) {
+        cell.x0[d] = c[d];
+    }
+    vhe_cell_cut(&cell, f, 0.0, &out);
+    return out.status == -1 ? 1.0
+         : out.status == 1 ? 0.0 : out.volume / (8.0 * he[0] * he[1] * he[2]);
+}
+
+static double smooth_leaf(const struct vhe_shape *s, const double *Q,
+                          const double *X, const double axis[3],
+                          const double c[3], const double he[3], int nd)
+{
+    double g[27], f[8], hc[3], cc[3], fine = 0.0, coarse, r;
+    const int nz = nd == 3 ? 3 : 1, nch = 1 << nd;
+    int i, j, k, d, ch;
+    for (k = 0; k < nz; ++k) {
+        for (j = 0; j < 3; ++j) {
+            for (i = 0; i < 3; ++i) {
+                double x[3], y[3];
+                x[0] = c[0] + (i - 1) * he[0];
+                x[1] = c[1] + (j - 1) * he[1];
+                x[2] = nd == 3 ? c[2] + (k - 1) * he[2] : c[2];
+                unpose(s, Q, X, x, y);
+                g[i + 3 * j + 9 * k] = -sdf_checked(s, axis, y);
+            }
+        }
+    }
+    /* corner k of a box of grid offset (oi, oj, ok) and grid step st */
+#define GRID(oi, oj, ok, st, k)                                              \
+    g[(oi) + (st) * ((k) & 1) + 3 * ((oj) + (st) * (((k) >> 1) & 1))       \
+      + (nd == 3 ? 9 * ((ok) + (st) * (((k) >> 2) & 1)) : 0)]
+    for (k = 0; k < 8; ++k) {
+        f[k] = GRID(0, 0, 0, 2, k);
+    }
+    coarse = box_cut(c, he, f);
+    for (d = 0; d < 3; ++d) {
+        hc[d] = d < nd ? 0.5 * he[d] : he[d];
+    }
+    for (ch = 0; ch < nch; ++ch) {
+        const int oi = ch & 1, oj = (ch >> 1) & 1, ok = (ch >> 2) & 1;
+        for (d = 0; d < 3; ++d) {
+            cc[d] = d < nd ? c[d] + ((ch >> d) & 1 ? 0.5 : -0.5) * he[d]
+                           : c[d];
+        }
+        for (k = 0; k < 8; ++k) {
+            f[k] = GRID(oi, oj, ok, 1, k);
+        }
+        fine += box_cut(cc, hc, f);
+    }
+#undef GRID
+    r = (4.0 * fine / nch - coarse) / 3.0;
+    return r < 0.0 ? 0.0 : (r > 1.0 ? 1.0 : r);
+}
+
+/* One sub-box of fraction() (centre c, squared half-diagonal hd2, twice
+ * its mean half-edge twoh, share w of the cell): wholly inside or outside
+ * when the surface is no closer than its half-diagonal (|sdf| bounds the
+ * distance from below; a rigid motion keeps distances), its share added
+ * to *frac; a leaf straddling the surface adds the linear estimate from a
+ * plane at distance sdf, or a smooth shape's second-order one (smooth_leaf;
+ * he: the box's half-edges).  Returns 1 for a box to split, else 0. */
+static inline int straddles(const struct vhe_shape *s, const double *Q,
+                            const double *X, const double axis[3],
+                            const double c[3], const double he[3],
+                            double hd2, double twoh, double *frac, double w,
+                            int leaf, int smooth, int nd)
+{
+    double y[3], sdf, f;
+    unpose(s, Q, X, c, y);
+    sdf = sdf_checked(s, axis, y);
+    if (sdf >= 0.0 && sdf * sdf >= hd2) {
+        return 0;                          /* wholly outside */
+    }
+    if (sdf < 0.0 && sdf * sdf >= hd2) {
+        *frac += w;                        /* wholly inside */
+        return 0;
+    }
+    if (!leaf) {
+        return 1;
+    }
+    if (smooth) {
+        *frac += w * smooth_leaf(s, Q, X, axis, c, he, nd);
+        return 0;
+    }
+    f = 0.5 - sdf / twoh;
+    *frac += w * (f < 0.0 ? 0.0 : (f > 1.0 ? 1.0 : f));
+    return 0;
+}
+
 static double fraction(const struct vhe_shape *s, const double *Q,
                        const double *X, const double lo[3],
                        const double hi[3], int ndim, int max_depth)
@@ -334,9 +474,17 @@ static double fraction(const struct vhe_shape *s, const double *Q,
     } stack[1 + 7 * VHE_FRACTION_DEPTH_CAP];
     double edge[3];    /* cell edge lengths [m] */
     double frac = 0.0; /* accumulated fraction of the cell */
+    /* each level's half-edges, squared half-diagonal and share of the
+     * cell (exact powers of two), made once: ldexp in the loop was a
+     * quarter of a drawing's time */
+    double half[VHE_FRACTION_DEPTH_CAP + 1][3];
+    double diag2[VHE_FRACTION_DEPTH_CAP + 1];
+    double share[VHE_FRACTION_DEPTH_CAP + 1];
+    double twoh[VHE_FRACTION_DEPTH_CAP + 1];  /* twice the mean half-edge */
+    double axis[3] = {0.0, 0.0, 1.0};
     const int nd = (ndim == 2) ? 2 : 3;
     const int nchild = 1 << nd;
-    int top = 0, d;
+    int top = 0, d, level, smooth;
 
     if (vhe_shape_check(s) != VHE_OK || lo == NULL || hi == NULL) {
         return 0.0;
@@ -353,6 +501,31 @@ static double fraction(const struct vhe_shape *s, const double *Q,
     } else if (max_depth > VHE_FRACTION_DEPTH_CAP) {
         max_depth = VHE_FRACTION_DEPTH_CAP;
     }
+    /* A smooth surface (sphere, ellipsoid, infinite cylinder) takes the
+     * second-order leaf SMOOTH_LEVELS levels higher up (vhe.h) */
+    smooth = s->kind == VHE_SPHERE || s->kind == VHE_ELLIPSOID
+          || (s->kind == VHE_CYLINDER && !(s->half_length > 0.0));
+    if (smooth) {
+        max_depth = max_depth > SMOOTH_LEVELS ? max_depth - SMOOTH_LEVELS : 0;
+    }
+
+    for (level = 0; level <= max_depth; ++level) {
+        diag2[level] = 0.0;
+        for (d = 0; d < nd; ++d) {
+            half[level][d] = ldexp(0.5 * edge[d], -level);
+            diag2[level] += half[level][d] * half[level][d];
+        }
+        half[level][2] = nd == 3 ? half[level][2] : 0.5;  /* 2D: a prism */
+        share[level] = ldexp(1.0, -nd * level);
+        twoh[level] = 0.0;
+        for (d = 0; d < nd; ++d) {
+            twoh[level] += half[level][d];
+        }
+        twoh[level] = 2.0 * (twoh[level] / nd);
+    }
+    if (s->kind == VHE_CYLINDER) {
+        unit_axis(s, axis);
+    }
 
     stack[0].c[0] = 0.5 * (lo[0] + hi[0]);
     stack[0].c[1] = 0.5 * (lo[1] + hi[1]);
@@ -362,40 +535,27 @@ static double fraction(const struct vhe_shape *s, const double *Q,
 
     while (top > 0) {
         const struct node b = stack[--top];
-        double he[3], hd2 = 0.0, sdf, w;
-        int k;
-
-        /* Half-edges of this level and the half-diagonal over nd dims. */
-        for (d = 0; d < nd; ++d) {
-            he[d] = ldexp(0.5 * edge[d], -b.level);
-            hd2 += he[d] * he[d];
-        }
-        /* This sub-box's share of the cell (exact power of two). */
-        w = ldexp(1.0, -nd * b.level);
-        {
-            double y[3];
-            unpose(s, Q, X, b.c, y);
-            sdf = vhe_shape_sdf(s, y);   /* a rigid motion keeps distances */
-        }
-
-        /* |sdf| bounds the distance from below: the whole box is on one
-         * side when the surface is no closer than the half-diagonal. */
-        if (sdf >= 0.0 && sdf * sdf >= hd2) {
-            continue;                      /* wholly outside */
-        }
-        if (sdf < 0.0 && sdf * sdf >= hd2) {
-            frac += w;                     /* wholly inside */
+        const double *he = half[b.level];
+        double c[3];
+        int k, cls = straddles(s, Q, X, axis, b.c, he, diag2[b.level],
+                               twoh[b.level], &frac, share[b.level],
+                               b.level >= max_depth, smooth, nd);
+        if (!cls) {
             continue;
         }
-        if (b.level >= max_depth) {
-            /* Leaf: linear estimate from a plane at distance sdf. */
-            double h = 0.0, f;
+        /* Split in 2 along each integrated direction; children at the
+         * deepest level are leaves, taken here in the order the stack
+         * would give them (the last child first) */
+        for (k = b.level + 1 == max_depth ? nchild - 1 : -1; k >= 0; --k) {
+            c[2] = b.c[2];
             for (d = 0; d < nd; ++d) {
-                h += he[d];
+                c[d] = b.c[d] + ((k >> d) & 1 ? 0.5 : -0.5) * he[d];
             }
-            h /= nd;
-            f = 0.5 - sdf / (2.0 * h);
-            frac += w * (f < 0.0 ? 0.0 : (f > 1.0 ? 1.0 : f));
+            straddles(s, Q, X, axis, c, half[max_depth], diag2[max_depth],
+                      twoh[max_depth], &frac, share[max_depth], 1, smooth,
+                      nd);
+        }
+        if (b.level + 1 == max_depth) {
             continue;
         }
         for (k = 0; k < nchild; ++k) {

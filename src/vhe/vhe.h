@@ -424,10 +424,16 @@ double vhe_shape_volume(const struct vhe_shape *s);
  * the surface (by vhe_shape_sdf) than its half-diagonal is wholly in or out;
  * any other is split in 2 along each integrated direction, down to
  * max_depth levels, where the leaf counts by the linear estimate
- * clamp(0.5 - sdf(centre) / (2 h), 0, 1), h the mean half-edge of the leaf.
- * ndim = 2: the case is 2D with z the empty direction; z is not split and
- * the shape is sampled at the cell's mid z (use shapes infinite along z).
- * Returns a value in [0, 1].
+ * clamp(0.5 - sdf(centre) / (2 h), 0, 1), h the mean half-edge of the leaf
+ * (first order in the leaf's size).  A smooth surface (sphere, ellipsoid,
+ * infinite cylinder) stops 3 levels higher (at 0 at least) with a
+ * second-order leaf: the leaf's and its halves' cuts (vhe_cell_cut) at the
+ * corner values of the distance bound, extrapolated as (4 halves - leaf)/3
+ * (a chord's error falls by 4 a level).  At max_depth 5 a sphere of 5.3
+ * cells' radius takes a quarter of the linear leaf's time, its largest
+ * cell error 6.4e-5 against 1.7e-4.  ndim = 2: the case is 2D with z the
+ * empty direction; z is not split and the shape is sampled at the cell's
+ * mid z (use shapes infinite along z).  Returns a value in [0, 1].
  */
 double vhe_shape_fraction(const struct vhe_shape *s, const double lo[3],
                           const double hi[3], int ndim, int max_depth);
