@@ -5,6 +5,7 @@
 #include "vhe.h"
 
 #include <math.h>
+#include <string.h>
 
 #define VHE_PI 3.14159265358979323846
 
@@ -424,6 +425,162 @@ static double smooth_leaf(const struct vhe_shape *s, const double *Q,
     return r < 0.0 ? 0.0 : (r > 1.0 ? 1.0 : r);
 }
 
+/* A box shape's fraction of the cell [lo, hi], exact: the cell, a convex
+ * polyhedron of at most CLIP_FACES faces of at most CLIP_PTS points, is
+ * clipped by the six half-spaces +-a_i.(x - X) <= semi_i of the posed box
+ * (a_i the box's axis i in the world, column i of Q), each face by
+ * Sutherland-Hodgman, the points on the plane closing the cut as a new
+ * face (ordered by angle about their mean); its volume is a third of the
+ * sum over its faces of (mean - cell centre).area (vhe_polygon_fan).
+ * Returns -1 if a polygon would overflow (not met: six planes add at most
+ * six faces and a point to a face each). */
+#define CLIP_FACES 16
+#define CLIP_PTS 16
+
+struct clip_poly {
+    int nf;
+    int np[CLIP_FACES];
+    double p[CLIP_FACES][CLIP_PTS][3];
+};
+
+static int clip_plane(struct clip_poly *P, const double n[3], double d)
+{
+    double cap[2 * CLIP_FACES][3], m[3] = {0.0, 0.0, 0.0}, u[3], v[3];
+    double ang[2 * CLIP_FACES];
+    int nc = 0, f, i, k, out = 0, nf = 0;
+    for (f = 0; f < P->nf && !out; ++f) {
+        for (i = 0; i < P->np[f]; ++i) {
+            out = out || n[0] * P->p[f][i][0] + n[1] * P->p[f][i][1]
+                         + n[2] * P->p[f][i][2] > d;
+        }
+    }
+    if (!out) {
+        return 0;                              /* wholly inside the plane */
+    }
+    for (f = 0; f < P->nf; ++f) {
+        double q[CLIP_PTS][3];
+        int nq = 0;
+        const int np = P->np[f];
+        for (i = 0; i < np; ++i) {
+            const double *a = P->p[f][i], *b = P->p[f][(i + 1) % np];
+            const double da = n[0] * a[0] + n[1] * a[1] + n[2] * a[2] - d;
+            const double db = n[0] * b[0] + n[1] * b[1] + n[2] * b[2] - d;
+            if (da <= 0.0) {
+                if (nq == CLIP_PTS) return -1;
+                memcpy(q[nq++], a, sizeof q[0]);
+            }
+            if ((da <= 0.0) != (db <= 0.0)) {
+                const double t = da / (da - db);
+                if (nq == CLIP_PTS || nc == 2 * CLIP_FACES) return -1;
+                for (k = 0; k < 3; ++k) {
+                    q[nq][k] = a[k] + t * (b[k] - a[k]);
+                    cap[nc][k] = q[nq][k];
+                }
+                ++nq;
+                ++nc;
+            }
+        }
+        if (nq >= 3) {
+            P->np[nf] = nq;
+            memcpy(P->p[nf], q, (size_t)nq * sizeof q[0]);
+            ++nf;
+        }
+    }
+    P->nf = nf;
+    if (nc < 3) {
+        return 0;
+    }
+    if (nf == CLIP_FACES) return -1;
+    /* the cut's face, its points in order about n (outward: the cut side) */
+    for (i = 0; i < nc; ++i) {
+        for (k = 0; k < 3; ++k) m[k] += cap[i][k] / nc;
+    }
+    k = fabs(n[0]) < 0.6 ? 0 : (fabs(n[1]) < 0.6 ? 1 : 2);
+    u[0] = u[1] = u[2] = 0.0;
+    u[k] = 1.0;
+    {
+        const double un = u[0] * n[0] + u[1] * n[1] + u[2] * n[2];
+        for (i = 0; i < 3; ++i) u[i] -= un * n[i];
+    }
+    v[0] = n[1] * u[2] - n[2] * u[1];
+    v[1] = n[2] * u[0] - n[0] * u[2];
+    v[2] = n[0] * u[1] - n[1] * u[0];
+    for (i = 0; i < nc; ++i) {
+        double r[3];
+        for (k = 0; k < 3; ++k) r[k] = cap[i][k] - m[k];
+        ang[i] = atan2(r[0] * v[0] + r[1] * v[1] + r[2] * v[2],
+                       r[0] * u[0] + r[1] * u[1] + r[2] * u[2]);
+    }
+    /* insertion sort by angle (a handful of points) */
+    for (i = 1; i < nc; ++i) {
+        double a = ang[i], c[3];
+        int j = i;
+        memcpy(c, cap[i], sizeof c);
+        for (; j > 0 && ang[j - 1] > a; --j) {
+            ang[j] = ang[j - 1];
+            memcpy(cap[j], cap[j - 1], sizeof c);
+        }
+        ang[j] = a;
+        memcpy(cap[j], c, sizeof c);
+    }
+    if (nc > CLIP_PTS) return -1;
+    P->np[nf] = nc;
+    memcpy(P->p[nf], cap, (size_t)nc * sizeof cap[0]);
+    P->nf = nf + 1;
+    return 0;
+}
+
+static double box_fraction(const struct vhe_shape *s, const double *Q,
+                           const double *X, const double lo[3],
+                           const double hi[3])
+{
+    static const int corner[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5},
+                                     {0, 1, 5, 4}, {2, 6, 7, 3},
+                                     {0, 2, 3, 1}, {4, 5, 7, 6}};
+    struct clip_poly P;
+    double c[3], h[3], vol = 0.0;
+    int f, i, k;
+    for (k = 0; k < 3; ++k) {
+        c[k] = 0.5 * (lo[k] + hi[k]);
+        h[k] = 0.5 * (hi[k] - lo[k]);
+    }
+    /* the cell about its centre (coordinates relative to c) */
+    P.nf = 6;
+    for (f = 0; f < 6; ++f) {
+        P.np[f] = 4;
+        for (i = 0; i < 4; ++i) {
+            for (k = 0; k < 3; ++k) {
+                P.p[f][i][k] = (corner[f][i] >> k) & 1 ? h[k] : -h[k];
+            }
+        }
+    }
+    for (i = 0; i < 3; ++i) {
+        /* axis i of the posed box; its centre X relative to c */
+        double a[3], ac = 0.0, sg;
+        const double *C = Q ? X : s->centre;
+        for (k = 0; k < 3; ++k) {
+            a[k] = Q ? Q[3 * k + i] : (k == i ? 1.0 : 0.0);
+            ac += a[k] * (C[k] - c[k]);
+        }
+        for (sg = -1.0; sg <= 1.0; sg += 2.0) {
+            const double n[3] = {sg * a[0], sg * a[1], sg * a[2]};
+            if (clip_plane(&P, n, s->semi[i] + sg * ac) != 0) {
+                return -1.0;
+            }
+            if (P.nf == 0) {
+                return 0.0;
+            }
+        }
+    }
+    for (f = 0; f < P.nf; ++f) {
+        double m[3], S[3];
+        vhe_polygon_fan(P.np[f], &P.p[f][0][0], m, S);
+        vol += m[0] * S[0] + m[1] * S[1] + m[2] * S[2];
+    }
+    vol /= 3.0 * 8.0 * h[0] * h[1] * h[2];
+    return vol < 0.0 ? 0.0 : (vol > 1.0 ? 1.0 : vol);
+}
+
 /* One sub-box of fraction() (centre c, squared half-diagonal hd2, twice
  * its mean half-edge twoh, share w of the cell): wholly inside or outside
  * when the surface is no closer than its half-diagonal (|sdf| bounds the
@@ -496,6 +653,25 @@ static double fraction(const struct vhe_shape *s, const double *Q,
         }
     }
     edge[2] = nd == 3 ? edge[2] : 0.0;
+    if (s->kind == VHE_BOX) {
+        /* exact, once the cell is not wholly on one side */
+        double y[3], mid[3], plo[3], phi[3], r, hd2 = 0.0;
+        for (d = 0; d < 3; ++d) {
+            mid[d] = 0.5 * (lo[d] + hi[d]);
+            plo[d] = d < nd ? lo[d] : mid[d] - 0.5;    /* 2D: a unit prism */
+            phi[d] = d < nd ? hi[d] : mid[d] + 0.5;
+            hd2 += d < nd ? 0.25 * edge[d] * edge[d] : 0.0;
+        }
+        unpose(s, Q, X, mid, y);
+        r = sdf_checked(s, axis, y);
+        if (r * r >= hd2) {
+            return r < 0.0 ? 1.0 : 0.0;
+        }
+        r = box_fraction(s, Q, X, plo, phi);
+        if (r >= 0.0) {
+            return r;
+        }
+    }
     if (max_depth < 0) {
         max_depth = 0;
     } else if (max_depth > VHE_FRACTION_DEPTH_CAP) {

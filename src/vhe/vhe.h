@@ -425,7 +425,9 @@ double vhe_shape_volume(const struct vhe_shape *s);
  * any other is split in 2 along each integrated direction, down to
  * max_depth levels, where the leaf counts by the linear estimate
  * clamp(0.5 - sdf(centre) / (2 h), 0, 1), h the mean half-edge of the leaf
- * (first order in the leaf's size).  A smooth surface (sphere, ellipsoid,
+ * (first order in the leaf's size).  A box is exact instead: the cell
+ * clipped by its six faces' half-spaces (to round-off; max_depth unused).
+ * A smooth surface (sphere, ellipsoid,
  * infinite cylinder) stops 3 levels higher (at 0 at least) with a
  * second-order leaf: the leaf's and its halves' cuts (vhe_cell_cut) at the
  * corner values of the distance bound, extrapolated as (4 halves - leaf)/3

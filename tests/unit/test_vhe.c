@@ -960,6 +960,64 @@ START_TEST(test_shape_box_volume)
 }
 END_TEST
 
+START_TEST(test_shape_box_exact)
+{
+    /*
+     * A box's fraction is its clip of the cell, exact: a cell [0,1]^3 cut
+     * by one face of a large turned box at x + y = 1, x + y + z = 1.5 and
+     * x + y + z = 0.5 holds 1/2, 1/2 and the corner's 1/48 (to 1e-12: the
+     * box's centre lies 100 away); a box turned
+     * about two axes sums to its volume over a grid to round-off (the
+     * plane leaf at depth 5: 1.1e-5).
+     */
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    const double r2 = sqrt(0.5), r3 = sqrt(1.0 / 3.0);
+    struct vhe_shape s = make_shape(VHE_BOX, 0, 0, 0);
+    double Q[9], X[3], sum = 0.0;
+    const double a = 0.3, b = 0.4;
+    int i, j, k;
+    s.semi[0] = s.semi[1] = s.semi[2] = 100.0;
+    /* axis 0 of the box along (1, 1, 0)/sqrt(2), its face at x + y = 1 */
+    {
+        const double q[9] = {r2, -r2, 0, r2, r2, 0, 0, 0, 1};
+        memcpy(Q, q, sizeof Q);
+    }
+    X[0] = X[1] = 0.5 - 100.0 * r2; X[2] = 0.5;
+    ASSERT_NEAR(vhe_shape_fraction_posed(&s, Q, X, lo, hi, 3, 5), 0.5, 1e-12);
+    /* axis 0 along (1, 1, 1)/sqrt(3): faces at x + y + z = 1.5 and 0.5 */
+    {
+        const double r6 = sqrt(1.0 / 6.0);
+        const double q[9] = {r3, -r2, -r6, r3, r2, -r6, r3, 0, 2 * r6};
+        memcpy(Q, q, sizeof Q);
+    }
+    for (k = 0; k < 3; ++k) X[k] = 0.5 - 100.0 * r3;
+    ASSERT_NEAR(vhe_shape_fraction_posed(&s, Q, X, lo, hi, 3, 5), 0.5, 1e-12);
+    for (k = 0; k < 3; ++k) X[k] = 0.5 / 3.0 - 100.0 * r3;
+    ASSERT_NEAR(vhe_shape_fraction_posed(&s, Q, X, lo, hi, 3, 5),
+                1.0 / 48.0, 1e-12);
+
+    /* turned about z by a, then about x by b */
+    {
+        const double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b);
+        const double q[9] = {ca, -sa * cb, sa * sb, sa, ca * cb, -ca * sb,
+                             0, sb, cb};
+        memcpy(Q, q, sizeof Q);
+    }
+    s.semi[0] = 6.4; s.semi[1] = 3.2; s.semi[2] = 4.16;
+    X[0] = 16.03; X[1] = 15.96; X[2] = 16.01;
+    for (i = 0; i < 32; ++i) {
+        for (j = 0; j < 32; ++j) {
+            for (k = 0; k < 32; ++k) {
+                const double cl[3] = {i, j, k};
+                const double ch[3] = {i + 1.0, j + 1.0, k + 1.0};
+                sum += vhe_shape_fraction_posed(&s, Q, X, cl, ch, 3, 5);
+            }
+        }
+    }
+    ASSERT_REL(sum, 8.0 * 6.4 * 3.2 * 4.16, 1e-13);
+}
+END_TEST
+
 START_TEST(test_shape_cylinder_2d)
 {
     /* infinite cylinder along z, 2D case: one layer of depth 0.1 */
@@ -1246,6 +1304,7 @@ static Suite *shapes_suite(void)
     tcase_add_test(tc, test_shape_convergence);
     tcase_add_test(tc, test_shape_ellipsoid_volume);
     tcase_add_test(tc, test_shape_box_volume);
+    tcase_add_test(tc, test_shape_box_exact);
     tcase_add_test(tc, test_shape_cylinder_2d);
     tcase_add_test(tc, test_shape_cylinder_3d);
     tcase_add_test(tc, test_shape_fraction_limits);
