@@ -8,11 +8,7 @@
 # bodyShapes::draw and the fluids' share of the difference).  About 10 s.
 . "$(dirname "$0")/tank.sh"
 d=$1 n=${2:-32}
-rm -rf "${d:?}"
-sceneCase floatingBlock "$d" W=0.6 H=0.6 nx="$n" ny="$n" depthOil=0 depthWater=0.35 \
-    shape=disk radius=0.1 blockBottom=0.05 nuWater=1e-2 rhoSolid=100 rigid=yes \
-    endTime=0.1 writeInterval=0.1 || exit 1
-sphereTank "$d" 0.6 "$n" "0.3 0.15 0.3" || exit 1
+lightSphereCase "$d" "$n" 0.1 || exit 1
 printf 'profiling { active true; cpuInfo false; memInfo false; sysInfo false; }\n' \
     >> "$d/system/controlDict"
 (run "$d" blockMesh && run "$d" setFields && run "$d" setBodies && run "$d" vheFoam) \

@@ -11,11 +11,7 @@
 # velocity at the end.  About 1 min at 16 cells, 4 at 24, 12 at 32.
 . "$(dirname "$0")/tank.sh"
 d=$1 n=${2:-16}
-rm -rf "${d:?}"
-sceneCase floatingBlock "$d" W=0.6 H=0.6 nx="$n" ny="$n" depthOil=0 depthWater=0.35 \
-    shape=disk radius=0.1 blockBottom=0.05 nuWater=1e-2 rhoSolid=100 rigid=yes \
-    endTime=10 writeInterval=10 || exit 1
-sphereTank "$d" 0.6 "$n" "0.3 0.15 0.3" || exit 1
+lightSphereCase "$d" "$n" 10 || exit 1
 (run "$d" blockMesh && run "$d" setFields && run "$d" setBodies && run "$d" vheFoam) \
     || { echo "failed: $d" >&2; exit 1; }
 draft=$(python3 "$TESTS_DIR/floating.py" bodyDraft "$d" 0.2 8)

@@ -1,8 +1,9 @@
 # Sourced by settling.sh and dkt.sh: a tank of the floatingBodies template
 # full of water (rho 1000, nu 1e-6), rigid bodies of material "wood",
-# decomposed in y for 2 ranks.  And by lightSphere.sh, tenCate.sh and
-# sphereDrag.sh: sphereTank, the floatingBlock template made 3D with a
-# sphere, and tenCateSphere, ten Cate's sphere in a closed box of oil.
+# decomposed in y for 2 ranks.  And by lightSphere.sh, drawCost.sh,
+# tenCate.sh and sphereDrag.sh: sphereTank, the floatingBlock template made
+# 3D with a sphere, lightSphereCase, the light sphere's case, and
+# tenCateSphere, ten Cate's sphere in a closed box of oil.
 . "$(dirname "${BASH_SOURCE[0]}")/../../tests/cases/lib.sh" 2>/dev/null
 
 # tankCase DIR W H NX NY RHO_BODY ENDTIME MAXDELTAT BODIES [NU]: the case
@@ -42,6 +43,18 @@ tankRun() {
     (cd "$1" && setFields > log.setFields 2>&1 && setBodies > log.setBodies 2>&1 \
         && decomposePar > log.decomposePar 2>&1) || return 1
     (cd "$1" && mpirun -np 2 vheFoam -parallel > log.vheFoam 2>&1)
+}
+
+# lightSphereCase DIR CELLS ENDTIME: lightSphere.sh's case (a rigid sphere
+# of r 0.1 and rho_s 100 centred at 0.15 m in water 0.35 m deep, nu 1e-2,
+# air above, in a closed 0.6 m cube of CELLS^3 cells), written at ENDTIME
+lightSphereCase() {
+    local d=$1 n=$2 tend=$3
+    rm -rf "${d:?}"
+    sceneCase floatingBlock "$d" W=0.6 H=0.6 nx="$n" ny="$n" depthOil=0 \
+        depthWater=0.35 shape=disk radius=0.1 blockBottom=0.05 nuWater=1e-2 \
+        rhoSolid=100 rigid=yes endTime="$tend" writeInterval="$tend" || return 1
+    sphereTank "$d" 0.6 "$n" "0.3 0.15 0.3"
 }
 
 # sphereTank DIR THICKNESS NZ CENTRE: the floatingBlock case in DIR (its
