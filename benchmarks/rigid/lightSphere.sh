@@ -8,7 +8,7 @@
 # water level in the corner column minus the sphere's lowest point)
 # against Archimedes' spherical cap (0.03897 m), in per cent of the
 # diameter, the largest relative phase volume drift, and the vertical
-# velocity at the end.  About 1 min at 16 cells, 4 at 24, 12 at 32.
+# velocity at the end.  About 1 min at 16 cells, 2.6 at 24, 6 at 32.
 . "$(dirname "$0")/tank.sh"
 d=$1 n=${2:-16}
 lightSphereCase "$d" "$n" 10 || exit 1
