@@ -682,7 +682,28 @@ static double fraction(const struct vhe_shape *s, const double *Q,
     smooth = s->kind == VHE_SPHERE || s->kind == VHE_ELLIPSOID
           || (s->kind == VHE_CYLINDER && !(s->half_length > 0.0));
     if (smooth) {
+        /* ... but no coarser than a quarter of the smallest radius of
+         * curvature a leaf's half-diagonal: the extrapolation needs the
+         * surface resolved by the leaf's grid (a sphere of a tenth of a
+         * cell's radius fell between the points of a depth-2 leaf and lost
+         * three quarters of its volume; from 0.87 cells' radius up in 3D
+         * nothing changes at the default depth) */
+        /* an ellipsoid's: the smallest semi-axis squared over the largest
+         * (in 2D of the two in the plane; the third is infinite) */
+        const double a = fmin(s->semi[0], s->semi[1]);
+        const double b = fmax(s->semi[0], s->semi[1]);
+        const double rmin = s->kind != VHE_ELLIPSOID ? s->radius
+            : nd == 2 ? a * a / b
+            : fmin(a, s->semi[2]) * fmin(a, s->semi[2]) / fmax(b, s->semi[2]);
+        double hd2 = 0.0;
+        for (d = 0; d < nd; ++d) {
+            hd2 += 0.25 * edge[d] * edge[d];
+        }
         max_depth = max_depth > SMOOTH_LEVELS ? max_depth - SMOOTH_LEVELS : 0;
+        while (max_depth < VHE_FRACTION_DEPTH_CAP
+               && ldexp(hd2, -2 * max_depth) > 0.0625 * rmin * rmin) {
+            ++max_depth;
+        }
     }
 
     for (level = 0; level <= max_depth; ++level) {

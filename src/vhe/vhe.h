@@ -428,7 +428,9 @@ double vhe_shape_volume(const struct vhe_shape *s);
  * (first order in the leaf's size).  A box is exact instead: the cell
  * clipped by its six faces' half-spaces (to round-off; max_depth unused).
  * A smooth surface (sphere, ellipsoid,
- * infinite cylinder) stops 3 levels higher (at 0 at least) with a
+ * infinite cylinder) stops 3 levels higher (at 0 at least, and no higher
+ * than where a leaf's half-diagonal is a quarter of the smallest radius
+ * of curvature, so that a body smaller than a cell is resolved) with a
  * second-order leaf: the leaf's and its halves' cuts (vhe_cell_cut) at the
  * corner values of the distance bound, extrapolated as (4 halves - leaf)/3
  * (a chord's error falls by 4 a level).  At max_depth 5 a sphere of 5.3

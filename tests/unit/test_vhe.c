@@ -889,21 +889,25 @@ START_TEST(test_shape_convergence)
     /*
      * A smooth shape's cells take the second-order leaf (the corner-value
      * cut of a leaf and of its halves, extrapolated), three levels above
-     * max_depth: every cell's fraction converges by 4.2 to 9.4 a level
-     * from depth 3 to 6 against depth 8 (require 3.5 against depth 7), and
-     * at the default depth 5 the largest cell error of a sphere and an
-     * ellipsoid 10 cells across is 7.6e-5 and 4.0e-5 (the linear leaf's
-     * 1.7e-4 and 2.9e-4 on a 5.3-cell sphere and an ellipsoid).  One slab
-     * of cells through the middle.
+     * max_depth but no coarser than a quarter of the smallest radius of
+     * curvature: every cell's fraction converges by 4.9 to 9.4 a level
+     * from depth 4 to 6 against depth 8 (require 3.5), and at the default
+     * depth 5 the largest cell error of a sphere and an ellipsoid 10 cells
+     * across is 7.6e-5 and 4.0e-5 (the plane leaf's 1.7e-4 and 2.9e-4 on a
+     * 5.3-cell sphere and an ellipsoid).  One slab of cells through the
+     * middle.  A sphere of a tenth of a cell's radius keeps its volume on
+     * the grid to 1e-3 (without the floor on the leaf's size it fell
+     * between a leaf's points: 0.25 of it).
      */
     struct vhe_shape s = make_shape(VHE_SPHERE, 0.31, -0.17, 0.43);
-    int shape, d, i, j;
+    int shape, d, i, j, k;
+    double sum = 0.0;
     s.radius = 10.0;
     s.semi[0] = 9.0; s.semi[1] = 6.5; s.semi[2] = 5.0;
     for (shape = 0; shape < 2; ++shape) {
-        double prev = 0.0;
+        double prev = 0.0, at5 = 0.0;
         s.kind = shape ? VHE_ELLIPSOID : VHE_SPHERE;
-        for (d = 3; d <= 5; ++d) {
+        for (d = 4; d <= 6; ++d) {
             double emax = 0.0;
             for (j = -12; j < 12; ++j) {
                 for (i = -12; i < 12; ++i) {
@@ -911,17 +915,31 @@ START_TEST(test_shape_convergence)
                     const double ch[3] = {i + 1.0, j + 1.0, 1.0};
                     emax = fmax(emax,
                                 fabs(vhe_shape_fraction(&s, cl, ch, 3, d)
-                                     - vhe_shape_fraction(&s, cl, ch, 3, 7)));
+                                     - vhe_shape_fraction(&s, cl, ch, 3, 8)));
                 }
             }
-            if (d > 3) {
+            if (d > 4) {
                 ck_assert_msg(emax < prev / 3.5, "depth %d: error %g, was %g",
                               d, emax, prev);
             }
+            at5 = d == 5 ? emax : at5;
             prev = emax;
         }
-        ck_assert_msg(prev < 2e-4, "depth 5: largest cell error %g", prev);
+        ck_assert_msg(at5 < 2e-4, "depth 5: largest cell error %g", at5);
     }
+
+    s = make_shape(VHE_SPHERE, 0.537, 0.413, 0.471);
+    s.radius = 0.1;
+    for (i = -1; i <= 1; ++i) {
+        for (j = -1; j <= 1; ++j) {
+            for (k = -1; k <= 1; ++k) {
+                const double cl[3] = {i, j, k};
+                const double ch[3] = {i + 1.0, j + 1.0, k + 1.0};
+                sum += vhe_shape_fraction(&s, cl, ch, 3, 5);
+            }
+        }
+    }
+    ASSERT_REL(sum, 4.0 / 3.0 * PI * 1e-3, 1e-3);
 }
 END_TEST
 
