@@ -334,6 +334,18 @@ void vhe_shape_bounds_posed(const struct vhe_shape *s, const double Q[9],
     }
 }
 
+/* Child k (bit d: the upper half along d) of the box centred at p with
+ * half-edges he, split along the nd integrated directions: its centre */
+static void child_centre(const double p[3], const double he[3], int k,
+                         int nd, double c[3])
+{
+    int d;
+    c[2] = p[2];
+    for (d = 0; d < nd; ++d) {
+        c[d] = p[d] + ((k >> d) & 1 ? 0.5 : -0.5) * he[d];
+    }
+}
+
 /* A smooth shape's leaf: the part of the box [c - he, c + he] where the
  * shape's distance bound, linear along each edge, is negative (the C
  * core's cell cut at the corner values), taken on the box and on its 2^nd
@@ -411,10 +423,7 @@ static double smooth_leaf(const struct vhe_shape *s, const double *Q,
     }
     for (ch = 0; ch < nch; ++ch) {
         const int oi = ch & 1, oj = (ch >> 1) & 1, ok = (ch >> 2) & 1;
-        for (d = 0; d < 3; ++d) {
-            cc[d] = d < nd ? c[d] + ((ch >> d) & 1 ? 0.5 : -0.5) * he[d]
-                           : c[d];
-        }
+        child_centre(c, he, ch, nd, cc);
         for (k = 0; k < 8; ++k) {
             f[k] = GRID(oi, oj, ok, 1, k);
         }
@@ -538,6 +547,7 @@ static double box_fraction(const struct vhe_shape *s, const double *Q,
                                      {0, 1, 5, 4}, {2, 6, 7, 3},
                                      {0, 2, 3, 1}, {4, 5, 7, 6}};
     struct clip_poly P;
+    const double *C = Q ? X : s->centre;
     double c[3], h[3], vol = 0.0;
     int f, i, k;
     for (k = 0; k < 3; ++k) {
@@ -555,9 +565,8 @@ static double box_fraction(const struct vhe_shape *s, const double *Q,
         }
     }
     for (i = 0; i < 3; ++i) {
-        /* axis i of the posed box; its centre X relative to c */
+        /* axis i of the posed box; its centre C relative to c */
         double a[3], ac = 0.0, sg;
-        const double *C = Q ? X : s->centre;
         for (k = 0; k < 3; ++k) {
             a[k] = Q ? Q[3 * k + i] : (k == i ? 1.0 : 0.0);
             ac += a[k] * (C[k] - c[k]);
@@ -630,6 +639,7 @@ static double fraction(const struct vhe_shape *s, const double *Q,
         int level;     /* 0 = the cell itself */
     } stack[1 + 7 * VHE_FRACTION_DEPTH_CAP];
     double edge[3];    /* cell edge lengths [m] */
+    double hd2 = 0.0;  /* the cell's squared half-diagonal over nd dims */
     double frac = 0.0; /* accumulated fraction of the cell */
     /* each level's half-edges, squared half-diagonal and share of the
      * cell (exact powers of two), made once: ldexp in the loop was a
@@ -653,14 +663,16 @@ static double fraction(const struct vhe_shape *s, const double *Q,
         }
     }
     edge[2] = nd == 3 ? edge[2] : 0.0;
+    for (d = 0; d < nd; ++d) {
+        hd2 += 0.25 * edge[d] * edge[d];
+    }
     if (s->kind == VHE_BOX) {
         /* exact, once the cell is not wholly on one side */
-        double y[3], mid[3], plo[3], phi[3], r, hd2 = 0.0;
+        double y[3], mid[3], plo[3], phi[3], r;
         for (d = 0; d < 3; ++d) {
             mid[d] = 0.5 * (lo[d] + hi[d]);
             plo[d] = d < nd ? lo[d] : mid[d] - 0.5;    /* 2D: a unit prism */
             phi[d] = d < nd ? hi[d] : mid[d] + 0.5;
-            hd2 += d < nd ? 0.25 * edge[d] * edge[d] : 0.0;
         }
         unpose(s, Q, X, mid, y);
         r = sdf_checked(s, axis, y);
@@ -695,10 +707,6 @@ static double fraction(const struct vhe_shape *s, const double *Q,
         const double rmin = s->kind != VHE_ELLIPSOID ? s->radius
             : nd == 2 ? a * a / b
             : fmin(a, s->semi[2]) * fmin(a, s->semi[2]) / fmax(b, s->semi[2]);
-        double hd2 = 0.0;
-        for (d = 0; d < nd; ++d) {
-            hd2 += 0.25 * edge[d] * edge[d];
-        }
         max_depth = max_depth > SMOOTH_LEVELS ? max_depth - SMOOTH_LEVELS : 0;
         while (max_depth < VHE_FRACTION_DEPTH_CAP
                && ldexp(hd2, -2 * max_depth) > 0.0625 * rmin * rmin) {
@@ -732,36 +740,17 @@ static double fraction(const struct vhe_shape *s, const double *Q,
 
     while (top > 0) {
         const struct node b = stack[--top];
-        const double *he = half[b.level];
-        double c[3];
-        int k, cls = straddles(s, Q, X, axis, b.c, he, diag2[b.level],
-                               twoh[b.level], &frac, share[b.level],
-                               b.level >= max_depth, smooth, nd);
-        if (!cls) {
+        int k;
+        if (!straddles(s, Q, X, axis, b.c, half[b.level], diag2[b.level],
+                       twoh[b.level], &frac, share[b.level],
+                       b.level >= max_depth, smooth, nd)) {
             continue;
         }
-        /* Split in 2 along each integrated direction; children at the
-         * deepest level are leaves, taken here in the order the stack
-         * would give them (the last child first) */
-        for (k = b.level + 1 == max_depth ? nchild - 1 : -1; k >= 0; --k) {
-            c[2] = b.c[2];
-            for (d = 0; d < nd; ++d) {
-                c[d] = b.c[d] + ((k >> d) & 1 ? 0.5 : -0.5) * he[d];
-            }
-            straddles(s, Q, X, axis, c, half[max_depth], diag2[max_depth],
-                      twoh[max_depth], &frac, share[max_depth], 1, smooth,
-                      nd);
-        }
-        if (b.level + 1 == max_depth) {
-            continue;
-        }
+        /* Split in 2 along each integrated direction */
         for (k = 0; k < nchild; ++k) {
             struct node *ch = &stack[top++];
             ch->level = b.level + 1;
-            ch->c[2] = b.c[2];
-            for (d = 0; d < nd; ++d) {
-                ch->c[d] = b.c[d] + ((k >> d) & 1 ? 0.5 : -0.5) * he[d];
-            }
+            child_centre(b.c, half[b.level], k, nd, ch->c);
         }
     }
     return frac > 1.0 ? 1.0 : frac;
