@@ -543,9 +543,6 @@ static double box_fraction(const struct vhe_shape *s, const double *Q,
                            const double *X, const double lo[3],
                            const double hi[3])
 {
-    static const int corner[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5},
-                                     {0, 1, 5, 4}, {2, 6, 7, 3},
-                                     {0, 2, 3, 1}, {4, 5, 7, 6}};
     struct clip_poly P;
     const double *C = Q ? X : s->centre;
     double c[3], h[3], vol = 0.0;
@@ -554,13 +551,15 @@ static double box_fraction(const struct vhe_shape *s, const double *Q,
         c[k] = 0.5 * (lo[k] + hi[k]);
         h[k] = 0.5 * (hi[k] - lo[k]);
     }
-    /* the cell about its centre (coordinates relative to c) */
+    /* the cell about its centre (coordinates relative to c), its faces
+     * as box_cut's */
     P.nf = 6;
     for (f = 0; f < 6; ++f) {
         P.np[f] = 4;
         for (i = 0; i < 4; ++i) {
             for (k = 0; k < 3; ++k) {
-                P.p[f][i][k] = (corner[f][i] >> k) & 1 ? h[k] : -h[k];
+                P.p[f][i][k] =
+                    (box_face_pts[4 * f + i] >> k) & 1 ? h[k] : -h[k];
             }
         }
     }
