@@ -1,4 +1,4 @@
-# Sourced by squareArray.sh, cubicArray.sh and stirrer.sh: scene A's
+# Sourced by squareArray.sh, cubicArray.sh, stirrer.sh and vortex.sh: scene A's
 # channel made a unit cell (rho 1, mu 1) holding one rigid body: periodic
 # and driven by a body force of 0.1 m/s^2 in x (periodicCell, the body
 # held in place), or a closed box (stirrer.sh).
@@ -45,14 +45,15 @@ PY
 }
 
 # runBody DIR DT BODY: the cell's one body (BODY, a setBodiesDict entry of
-# material rubber), a fixed step DT; the mesh, the body and the run
+# material rubber), a fixed step DT (none: the case's adjustable step); the
+# mesh, the body and the run
 runBody() {
     local d=$1 dt=$2 body=$3
     cat > "$d/system/setBodiesDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
 bodies { $body }
 DICT
-    fixedStep "$d" "$dt" || return 1
+    [ -z "$dt" ] || fixedStep "$d" "$dt" || return 1
     (cd "$d" && blockMesh > log.blockMesh 2>&1 && setBodies > log.setBodies 2>&1) || return 1
     (cd "$d" && vheFoam > log.vheFoam 2>&1)
 }

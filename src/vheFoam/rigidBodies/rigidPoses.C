@@ -299,6 +299,8 @@ void Foam::rigidPoses::move(vheMixture& mixture)
             b.X0 = b.X;
             b.Q0 = b.Q;
             b.angle0 = b.angle;
+            b.U0 = b.U;
+            b.omega0 = b.omega;
         }
     }
 
@@ -307,6 +309,7 @@ void Foam::rigidPoses::move(vheMixture& mixture)
     {
         body& bd = bodies_[b];
         bd.X = bd.X0 + dt*bd.U;
+        bd.Udrawn = bd.U;
         bd.Q = bd.Q0;
         vhe_pose_rotate(bd.Q.data(), bd.omega.cdata(), dt);
         if (normal >= 0) bd.angle = bd.angle0 + dt*bd.omega[normal];
@@ -349,6 +352,7 @@ void Foam::rigidPoses::move(vheMixture& mixture)
     // cell
     drawObstacles();
     separate();
+    for (body& bd : bodies_) bd.Xdrawn = bd.X;
     forAll(bodies_, b) draw(b);
 
     // The fluids fill what the drawn bodies leave; the density change is a
@@ -374,11 +378,24 @@ void Foam::rigidPoses::setMotion
     const bodyRegions& regions
 )
 {
+    const fvMesh& mesh = mixture_.rho().mesh();
+    const bool drawn = stepIndex_ == mesh.time().timeIndex();
+    const scalar dt = mesh.time().deltaTValue();
+    const label normal = mesh.nSolutionD() == 2 ? vector::Z : -1;
     forAll(bodies_, b)
     {
         body& bd = bodies_[b];
         bd.omega = omega[b];
         bd.U = Ub[b] + (omega[b] ^ regions.nearestImage(bd.X - Xm[b]));
+        if (!drawn) continue;
+        // The step's pose by the trapezoidal rule, from where the drawing
+        // put it (contact's separation kept); U again at the new X
+        bd.X = bd.Xdrawn + dt*(0.5*(bd.U0 + bd.U) - bd.Udrawn);
+        bd.U = Ub[b] + (omega[b] ^ regions.nearestImage(bd.X - Xm[b]));
+        const vector omegaMean(0.5*(bd.omega0 + bd.omega));
+        bd.Q = bd.Q0;
+        vhe_pose_rotate(bd.Q.data(), omegaMean.cdata(), dt);
+        if (normal >= 0) bd.angle = bd.angle0 + dt*omegaMean[normal];
     }
     velocityKnown_ = true;
     writeState();
