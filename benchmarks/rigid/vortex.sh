@@ -1,18 +1,19 @@
 #!/bin/bash
-# vortex.sh DIR CELLS MAXCO [ENDTIME]: a free, neutrally buoyant rigid disk
+# vortex.sh DIR CELLS MAXCO [ENDTIME [KEY=VALUE...]]: a free rigid disk
 # (r 0.05) in a rotating flow: Taylor-Green vortices, u = sin(kx) cos(ky),
 # v = -cos(kx) sin(ky), k = 2 pi, in a periodic unit square (rho 1, mu
 # 1e-3: Reynolds number 1000 on the vortex cell, the vortices decaying as
 # exp(-2 nu k^2 t), by 8 % a second).  The disk starts 0.1 from the centre
 # of the vortex at (0.25, 0.25), on the streamline psi = sin(kx) sin(ky) =
 # 0.809, and turns about it in about a second.  Time step by the Courant
-# number MAXCO, to t = ENDTIME (default 3).  vortex.py reads the orbit from
-# postProcessing/rigidBodies.
+# number MAXCO, to t = ENDTIME (default 3).  KEY=VALUE: the channel's
+# parameters changed (rhoDisk=0.1: a light disk, which the vortex draws
+# in).  vortex.py reads the orbit from postProcessing/rigidBodies.
 . "$(dirname "$0")/arrayCase.sh"
-d=$1 n=$2 co=$3 tend=${4:-3}
+d=$1 n=$2 co=$3 tend=${4:-3}; shift 4 2> /dev/null || shift $#
 rm -rf "$d"
 channelCase "$d" cells="$n" nDisks=1 rigid=yes f=0 mu=1e-3 endTime="$tend" \
-    writeInterval="$tend" || exit 1
+    writeInterval="$tend" "$@" || exit 1
 caseEdits "$d" <<'PY'
 sub(d + '/system/blockMeshDict',
     'walls  { type wall; faces ((0 1 5 4) (3 7 6 2)); }',
