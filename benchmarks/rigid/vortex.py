@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """The orbit of vortex.sh's disk: psi = sin(kX) sin(kY) of its centre
-(0.809 at the start; the streamline it starts on) and its distance from
-the vortex centre (0.25, 0.25), at t = 0, 0.5, ..., the end.
+(0.809 at the start; the streamline it starts on), its distance from the
+vortex centre (0.25, 0.25) and its angular velocity, at t = 0, 0.5, ...,
+the end.  A rigid disk's centre is its pose (postProcessing/rigidBodies),
+an elastic one's its centroid (postProcessing/bodies, at the writes).
 
-Usage: vortex.py DIR...   (one line per case: DIR, then t:psi(r) pairs)
-       vortex.py -at T DIR   (psi at the sample nearest T)"""
+Usage: vortex.py DIR...        (one line per case: t:psi(r) pairs)
+       vortex.py -at T DIR     (psi and omega_z at the sample nearest T)"""
 import math
 import os
 import sys
@@ -12,33 +14,43 @@ import sys
 K = 2*math.pi
 
 
-def orbit(case):
-    base = os.path.join(case, 'postProcessing', 'rigidBodies')
+def rows_of(base, name, cols):
     rows = []
     for start in sorted(os.listdir(base), key=float):
         rows = [r for r in rows if r[0] <= float(start)]
-        with open(os.path.join(base, start, 'poses.dat')) as f:
+        with open(os.path.join(base, start, name)) as f:
             for line in f:
                 if line.startswith('#') or not line.strip():
                     continue
                 p = line.split()
-                rows.append((float(p[0]), float(p[2]), float(p[3])))
+                rows.append(tuple(float(p[c]) for c in cols))
     return rows
 
 
+def orbit(case):
+    """(t, X, Y, omega_z) rows"""
+    base = os.path.join(case, 'postProcessing')
+    if os.path.isdir(os.path.join(base, 'rigidBodies')):
+        return rows_of(os.path.join(base, 'rigidBodies'), 'poses.dat',
+                       (0, 2, 3, 10))
+    return [(0.0, 0.35, 0.25, float('nan'))] + rows_of(
+        os.path.join(base, 'bodies'), 'bodies.dat', (0, 5, 6, 13))
+
+
 def at(rows, t):
-    t0, x, y = min(rows, key=lambda r: abs(r[0] - t))
-    return t0, math.sin(K*x)*math.sin(K*y), math.hypot(x - 0.25, y - 0.25)
+    t0, x, y, w = min(rows, key=lambda r: abs(r[0] - t))
+    return t0, math.sin(K*x)*math.sin(K*y), math.hypot(x - 0.25, y - 0.25), w
 
 
 if __name__ == '__main__':
     args = sys.argv[1:]
     if args[:1] == ['-at']:
-        print('%.6f' % at(orbit(args[2]), float(args[1]))[1])
+        _, psi, _, w = at(orbit(args[2]), float(args[1]))
+        print('%.6f %.6f' % (psi, w))
         sys.exit(0)
     for case in args:
         rows = orbit(case)
         end = rows[-1][0]
-        out = ['%.2f:%.4f(%.4f)' % at(rows, 0.5*i)
+        out = ['%.2f:%.4f(%.4f)' % at(rows, 0.5*i)[:3]
                for i in range(int(round(end/0.5)) + 1)]
         print(case, ' '.join(out))
