@@ -99,7 +99,7 @@ check floatingEdgePressure "$dp < 0.02*1000*9.81*0.1" \
 # A light rigid box (rho_s 100, a tenth of the water's), the same box
 # released 0.2 m under the surface: it rises through the surface and
 # floats, upright, at Archimedes' draft (0.0099 m, 0.4 cell) within 1 % of
-# its height over 35 <= t <= 40 (measured 0.00914 m, -0.77 %, with the
+# its height over 35 <= t <= 40 (measured 0.00911 m, -0.81 %, with the
 # wall edge and its solid outside the held cells weighing on the held
 # cells beside it; spread over all the held cells, the box lost its edge
 # row's righting moment: tilt 0.016 rad, -1.2 %; with the weighted edge
@@ -133,7 +133,7 @@ check lightVolumes "$drift < 1e-6" "largest relative phase volume drift $drift"
 # ten-thousandfold (the symmetric box's tilt grows from 5e-11 to 6e-7 rad
 # at t = 0.4; the serial run with its cells renumbered parts from it by
 # 1.5e-6 m), so the box's centre agrees to 2e-5 m, 8e-4 of a cell
-# (measured 8.3e-8; 3.2e-6 with the weighted edge; 7.5e-8 without the exchange; 2.9e-4 when cells the
+# (measured 2.6e-7; 3.2e-6 with the weighted edge; 7.5e-8 without the exchange; 2.9e-4 when cells the
 # box reached by 1e-6 took part)
 for v in serial parallel; do
     cp -r "$li.start" "$li.$v"
@@ -239,7 +239,7 @@ check fixedDamVolumes "$drift < 1e-6" "largest relative phase volume drift $drif
 # longer by the walls (benchmarks/rigid/jeffery.sh, weighted edge: half
 # periods 1.042, 1.072, 1.059 of Jeffery's at 32, 64, 128 cells, solved
 # coupled, about 1.06 with the walls at 3.3 semi-axes; the wall edge
-# 1.061 at 64).  At 64 cells: within 1.0 to 1.08
+# 1.060 at 64).  At 64 cells: within 1.0 to 1.08
 # of Jeffery's half period, its centre still (1e-6), its shape kept
 # (Taylor deformation of its fraction 1/3 within 0.01; measured 2.8e-3).
 je="$WORK/jeffery"
