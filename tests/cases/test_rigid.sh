@@ -133,7 +133,7 @@ check lightVolumes "$drift < 1e-6" "largest relative phase volume drift $drift"
 # ten-thousandfold (the symmetric box's tilt grows from 5e-11 to 6e-7 rad
 # at t = 0.4; the serial run with its cells renumbered parts from it by
 # 1.5e-6 m), so the box's centre agrees to 2e-5 m, 8e-4 of a cell
-# (measured 2.6e-7; 3.2e-6 with the weighted edge; 7.5e-8 without the exchange; 2.9e-4 when cells the
+# (measured 6.1e-8; 3.2e-6 with the weighted edge; 7.5e-8 without the exchange; 2.9e-4 when cells the
 # box reached by 1e-6 took part)
 for v in serial parallel; do
     cp -r "$li.start" "$li.$v"

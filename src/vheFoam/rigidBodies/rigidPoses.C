@@ -386,12 +386,14 @@ void Foam::rigidPoses::setMotion
     {
         body& bd = bodies_[b];
         bd.omega = omega[b];
-        bd.U = Ub[b] + (omega[b] ^ regions.nearestImage(bd.X - Xm[b]));
+        // The velocity of the pose's point, body-fixed: its offset from
+        // the centre of mass as drawn
+        const vector X(drawn ? bd.Xdrawn : bd.X);
+        bd.U = Ub[b] + (omega[b] ^ regions.nearestImage(X - Xm[b]));
         if (!drawn) continue;
         // The step's pose by the trapezoidal rule, from where the drawing
-        // put it (contact's separation kept); U again at the new X
+        // put it (contact's separation kept)
         bd.X = bd.Xdrawn + dt*(0.5*(bd.U0 + bd.U) - bd.Udrawn);
-        bd.U = Ub[b] + (omega[b] ^ regions.nearestImage(bd.X - Xm[b]));
         const vector omegaMean(0.5*(bd.omega0 + bd.omega));
         bd.Q = bd.Q0;
         vhe_pose_rotate(bd.Q.data(), omegaMean.cdata(), dt);
