@@ -25,13 +25,9 @@ def sub(path, old, new):
 exec(sys.stdin.read())' "$1"
 }
 
-# periodicCell DIR CELLS ENDTIME: the channel's walls a cyclic pair, its
-# one disk's material held in place (motion fixed)
-periodicCell() {
-    local d=$1
-    unitCell "$d" "$2" "$3" 0.1 || return 1
-    caseEdits "$d" <<'PY'
-# walls -> a cyclic pair
+# cyclicWalls DIR: the channel's walls a cyclic pair (periodic in x and y)
+cyclicWalls() {
+    caseEdits "$1" <<'PY'
 sub(d + '/system/blockMeshDict',
     'walls  { type wall; faces ((0 1 5 4) (3 7 6 2)); }',
     'bottom { type cyclic; neighbourPatch top; faces ((0 1 5 4)); }\n'
@@ -40,6 +36,15 @@ sub(d + '/0/U', 'walls { type noSlip; }',
     'bottom { type cyclic; }\n    top { type cyclic; }')
 sub(d + '/0/p_rgh', 'walls { type fixedFluxPressure; value uniform 0; }',
     'bottom { type cyclic; }\n    top { type cyclic; }')
+PY
+}
+
+# periodicCell DIR CELLS ENDTIME: the channel's walls a cyclic pair, its
+# one disk's material held in place (motion fixed)
+periodicCell() {
+    local d=$1
+    unitCell "$d" "$2" "$3" 0.1 && cyclicWalls "$d" || return 1
+    caseEdits "$d" <<'PY'
 sub(d + '/constant/vheProperties', 'rigid yes;', 'rigid yes; motion fixed;')
 PY
 }

@@ -8,21 +8,14 @@
 # 0.809, and turns about it in about a second.  Time step by the Courant
 # number MAXCO, to t = ENDTIME (default 3).  KEY=VALUE: the channel's
 # parameters changed (rhoDisk=0.1: a light disk, which the vortex draws
-# in).  vortex.py reads the orbit from postProcessing/rigidBodies.
+# in; rigid=no G=1e5: a stiff elastic disk).  vortex.py reads the orbit
+# (postProcessing/rigidBodies, or bodies for an elastic disk).
 . "$(dirname "$0")/arrayCase.sh"
-d=$1 n=$2 co=$3 tend=${4:-3}; shift 4 2> /dev/null || shift $#
+d=$1 n=$2 co=$3 tend=${4:-3}; shift $(($# < 4 ? $# : 4))
 rm -rf "$d"
 channelCase "$d" cells="$n" nDisks=1 rigid=yes f=0 mu=1e-3 endTime="$tend" \
-    writeInterval="$tend" "$@" || exit 1
+    writeInterval="$tend" "$@" && cyclicWalls "$d" || exit 1
 caseEdits "$d" <<'PY'
-sub(d + '/system/blockMeshDict',
-    'walls  { type wall; faces ((0 1 5 4) (3 7 6 2)); }',
-    'bottom { type cyclic; neighbourPatch top; faces ((0 1 5 4)); }\n'
-    '    top    { type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }')
-sub(d + '/0/U', 'walls { type noSlip; }',
-    'bottom { type cyclic; }\n    top { type cyclic; }')
-sub(d + '/0/p_rgh', 'walls { type fixedFluxPressure; value uniform 0; }',
-    'bottom { type cyclic; }\n    top { type cyclic; }')
 # the vortices, cell by cell (blockMesh numbers x fastest)
 import math
 n = int(open(d + '/system/parameters').read().split('cells')[1].split(';')[0])
