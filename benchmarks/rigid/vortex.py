@@ -11,30 +11,21 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bodiesdat import function_rows  # noqa: E402
+
 K = 2*math.pi
-
-
-def rows_of(base, name, cols):
-    rows = []
-    for start in sorted(os.listdir(base), key=float):
-        rows = [r for r in rows if r[0] <= float(start)]
-        with open(os.path.join(base, start, name)) as f:
-            for line in f:
-                if line.startswith('#') or not line.strip():
-                    continue
-                p = line.split()
-                rows.append(tuple(float(p[c]) for c in cols))
-    return rows
 
 
 def orbit(case):
     """(t, X, Y, omega_z) rows"""
-    base = os.path.join(case, 'postProcessing')
-    if os.path.isdir(os.path.join(base, 'rigidBodies')):
-        return rows_of(os.path.join(base, 'rigidBodies'), 'poses.dat',
-                       (0, 2, 3, 10))
-    return [(0.0, 0.35, 0.25, float('nan'))] + rows_of(
-        os.path.join(base, 'bodies'), 'bodies.dat', (0, 5, 6, 13))
+    if os.path.isdir(os.path.join(case, 'postProcessing', 'rigidBodies')):
+        rows, cols = function_rows(case, 'rigidBodies', 'poses.dat'), (0, 2, 3, 10)
+        start = []
+    else:
+        rows, cols = function_rows(case, 'bodies', 'bodies.dat'), (0, 5, 6, 13)
+        start = [(0.0, 0.35, 0.25, float('nan'))]
+    return start + [tuple(float(r[c]) for c in cols) for r in rows]
 
 
 def at(rows, t):
