@@ -160,7 +160,11 @@ void Foam::coupledStepPETSc::solve
     const surfaceScalarField rhof(fvc::interpolate(rho));
     const volScalarField rAU("rAU", rho/UEqn.A());
     const surfaceScalarField Df(fvc::interpolate(rAU));
-    const surfaceVectorField aInterp(linearInterpolate(acceleration));
+    // the wide part D a_c interpolated as one (interFoam's flux(rAU H)):
+    // where rho/A jumps, at a light or held body's edge, the product of
+    // the two interpolations took the body's large acceleration at the
+    // liquid's coefficient
+    const surfaceVectorField DaInterp(linearInterpolate(rAU*acceleration));
     const surfaceScalarField& w = mesh_.weights();
     const surfaceVectorField& Sf = mesh_.Sf();
     const surfaceScalarField& magSf = mesh_.magSf();
@@ -326,7 +330,7 @@ void Foam::coupledStepPETSc::solve
     // A face's terms in the rows of cell X (owner O, neighbour N): the
     // momentum rows take -rho V reconstruct(a_f), a_f = ff/rho_f - g (p_N
     // - p_O); the continuity rows s phi_f (s = +1 owner, -1 neighbour),
-    // phi_f = w U_O.S + (1 - w) U_N.S + D (a_f - aInterp.S)
+    // phi_f = w U_O.S + (1 - w) U_N.S + D a_f - (D a)_f.S
     auto faceTerms = [&]
     (
         label X, scalar s, PetscInt rO, PetscInt rN,
@@ -346,7 +350,7 @@ void Foam::coupledStepPETSc::solve
         }
         add(row(X, nd), rN*nb + nd, -s*D*g);
         add(row(X, nd), rO*nb + nd, s*D*g);
-        addB(row(X, nd), -s*D*(ffByRho - (aI & S)));
+        addB(row(X, nd), -s*(D*ffByRho - (aI & S)));
     };
 
     forAll(own, f)
@@ -359,7 +363,7 @@ void Foam::coupledStepPETSc::solve
             faceTerms
             (
                 X, X == O ? 1 : -1, start0 + O, start0 + N, w[f], Sf[f],
-                SfHat[f], g, ffr, Df[f], aInterp[f]
+                SfHat[f], g, ffr, Df[f], DaInterp[f]
             );
         }
     }
@@ -388,7 +392,7 @@ void Foam::coupledStepPETSc::solve
                     fc[j], 1, start0 + fc[j], PetscInt(nbr[j]), wb[j],
                     Sb[j], Shat[j], db[j]*magSb[j]/rhob[j],
                     ffb[j]/rhob[j], Df.boundaryField()[patchi][j],
-                    aInterp.boundaryField()[patchi][j]
+                    DaInterp.boundaryField()[patchi][j]
                 );
             }
             continue;
@@ -516,7 +520,7 @@ void Foam::coupledStepPETSc::solve
     // The face flux and the accelerations as the projection leaves them
     accelerationFlux =
         (faceForces - fvc::snGrad(p_rgh)*magSf)/rhof;
-    surfaceScalarField damping(Df*(accelerationFlux - (aInterp & Sf)));
+    surfaceScalarField damping(Df*accelerationFlux - (DaInterp & Sf));
     forAll(patches, patchi)
     {
         if (!patches[patchi].coupled())

@@ -21,7 +21,8 @@ Foam::stepCoupling::stepCoupling
     iter_(0),
     change_(0),
     nKept_(0),
-    lastResidual_(0)
+    lastResidual_(0),
+    projection_(false)
 {
     const dictionary* d = pimpleDict.findDict("coupling");
     if (d)
@@ -72,7 +73,8 @@ void Foam::stepCoupling::start
 (
     bool on,
     const volVectorField& U,
-    const volVectorField& acceleration
+    const volVectorField& acceleration,
+    bool projection
 )
 {
     // The differences of the last step are kept: its slow modes (the
@@ -82,16 +84,19 @@ void Foam::stepCoupling::start
     // another map's where the step's matrix moved with its bodies (rho of
     // disks a thousand times lighter than the liquid): loop() drops them
     // at the first pass that does not reduce the residual.  They go when
-    // a step was not iterated, did not converge (the fallback's
-    // projection is another map) or the mesh changed.  (decided on all
-    // ranks together: a refinement may change some only, and every rank
-    // must keep as many differences for the sums)
+    // a step was not iterated or did not converge, into and out of the
+    // fallback's projection (another map: the coupled steps after a
+    // fallback of lightRises at 64 cells all fell back too), or when the
+    // mesh changed.  (decided on all ranks together: a refinement may
+    // change some only, and every rank must keep as many differences for
+    // the sums)
     const bool keep = returnReduce
     (
-        on && on_ && change_ < tolerance_ && dFU_.size()
-     && dFU_[0].size() == U.size() && !mesh_.changing(),
+        on && on_ && change_ < tolerance_ && !projection && !projection_
+     && dFU_.size() && dFU_[0].size() == U.size() && !mesh_.changing(),
         andOp<bool>()
     );
+    projection_ = projection;
     on_ = on;
     iter_ = 0;
     change_ = 0;
