@@ -39,7 +39,7 @@ check fixedVolumes "$v64 < 1e-12 and $lv < 1e-12" "cylinder volume change $v64, 
 # A disk moved along the axis of a closed channel 8 diameters wide in
 # Stokes flow (benchmarks/rigid/faxen.sh, Re 1e-3, to t = 1): F/(mu U)
 # against Faxen's 10.558 for a cylinder midway between plane walls.
-# Measured -0.50 % at 8 cells across, -0.04 % at 16 (with the weight min(1,
+# Measured -0.47 % at 8 cells across, -0.03 % at 16 (with the weight min(1,
 # 4 alpha) -1.43 % and -0.25 %; held rigid inside the prediction and
 # projected after it, -8.4 %, -3.5 %); bounds: within 0.25 % at 16 cells,
 # closer than at 8

@@ -15,7 +15,8 @@
 #    water drains slowly, as it should), never moving up.
 #  - the Archimedes box ten times stiffer (G/rho_s = 100, elastic Courant about
 #    2 at the flow step): no spurious air currents, the largest air speed
-#    at t = 3 below 0.1 m/s (measured 0.018; 4.9 before the semi-implicit
+#    at t = 3 below 0.1 m/s (measured 0.009, 0.018 before the coupled
+#    step interpolated rho/A a_c as one; 4.9 before the semi-implicit
 #    increment's explicit part was weighted down at body/gas faces).
 #  - three fluids and a body: the tutorial's soft disk sinking through oil
 #    onto water; alphas in [0, 1] within 1e-6 (measured -1e-9); every

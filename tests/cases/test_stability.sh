@@ -10,10 +10,10 @@ cp "$VHE_ROOT/benchmarks/stability/Allrun" "$VHE_ROOT/benchmarks/stability/evalu
 "$WORK/Allrun" -quick > "$WORK/log.Allrun" 2>&1
 lines=$(grep -E "^(PASS|FAIL) stability_" "$WORK/log.Allrun")
 # (lightRises, disks 1000 times lighter than the liquid, gained energy,
-# 0.54 of its scale, while its coupled steps stalled on the last step's
-# Anderson differences and fell back to the projection, whose damping
-# strains light disks; stepCoupling now drops differences that do not
-# help: no energy growth, max |dev B| 0.045 against 1.48)
+# 0.54 of its scale, while its coupled steps stalled and fell back to the
+# projection, whose damping strains light disks; the coupled step's lagged
+# wide term, rho/A a_c, is now interpolated as one, coupledStep.H: 5
+# passes a step, no energy growth, max |dev B| 0.045 against 1.48)
 echo "$lines"
 n=$(echo "$lines" | grep -c "stability_")
 check stabilitySuiteRan "$n == 11" "$n of 11 cases judged (see $WORK/log.Allrun)"

@@ -7,10 +7,10 @@
 #  - explicit (elastic Courant limited: measured 2566 steps), solved
 #    coupled every step as the semi-implicit variant's iterated steps
 #    are, gives the same flow rate within 1.5e-3 relative (measured
-#    1.5e-3), and the semi-implicit one converges to it in dt: with the
-#    step capped at 5 ms instead of 10 ms the difference falls to 0.29
-#    of itself (Q 7.49018e-3, 7.49814e-3 at 10, 5 ms; explicit
-#    7.50133e-3; bound 0.7; 7.24e-3 when the disks' edge cells were
+#    1.4e-3), and the semi-implicit one converges to it in dt: with the
+#    step capped at 5 ms instead of 10 ms the difference falls to 0.26
+#    of itself (Q 7.49102e-3, 7.49877e-3 at 10, 5 ms; explicit
+#    7.50145e-3; bound 0.7; 7.24e-3 when the disks' edge cells were
 #    stiff in proportion to phi_s and the disks acted larger),
 #  - the stiff disks keep their shape: max |dev B| below 0.01 (measured
 #    4.6e-3).
@@ -60,14 +60,14 @@ check stiffVariantsConverge "abs($qh - $qe) < 0.7*abs($qs - $qe)" "Q semi-implic
 # (vhe_body_weight): stressed in proportion to phi_s its edge cells were
 # rigid down to small fractions and it acted half a cell larger, turning
 # at 0.964 of half the vorticity with a wall stress of 1.139 at 32 cells;
-# now 0.975 and 1.089, the rigid disk 1.0622 (below).
+# now 0.975 and 1.089, the rigid disk 1.0623 (below).
 couette="$VHE_ROOT/benchmarks/rigid/couette.sh"
 for b in 100000 rigid; do
     "$couette" "$WORK/couette_$b" 32 "$b" 10 0.5 || fail "couette_$b" "$WORK/couette_$b/log.vheFoam"
 done
 # Rigid bodies are held in the coupled step's matrix, their velocities
 # unknowns of it (coupledRigidRows): the disk's wall stress is the same at
-# viscous numbers 10 and 1000 (measured 1.06216 and 1.06214; held rigid
+# viscous numbers 10 and 1000 (measured 1.0623 and 1.0623; held rigid
 # inside the prediction and projected after it, coupling { solve stiff; },
 # 1.057 and 1.039: the projection's damping leaked in proportion to the
 # step)
@@ -79,7 +79,7 @@ passes=$(grep Coupling "$WORK/couette_100000/log.vheFoam" | awk '{s += $2} END {
 check stiffDiskTurns "-($wS) > 0.97" \
     "stiff disk's rotation rate over half the vorticity $(python3 -c "print(-($wS))") (rigid $(python3 -c "print(-($wR))")), $passes passes a step"
 # The rigid disk's edge is a wall (rigidBodies::edge): its wall stress
-# converges with the mesh, 1.0622, 1.0650, 1.0654 at 32, 64, 128 cells
+# converges with the mesh, 1.0623, 1.0650, 1.0654 at 32, 64, 128 cells
 # (benchmarks/rigid/couette.sh, viscous number 10).  The stiff disk's
 # edge cells, stressed down to a quarter of a cell outside its outline,
 # make it act larger by a first-order skin: 1.0885, 1.0871, 1.0750, so

@@ -20,8 +20,6 @@ Foam::stepCoupling::stepCoupling
     on_(false),
     iter_(0),
     change_(0),
-    nKept_(0),
-    lastResidual_(0),
     projection_(false)
 {
     const dictionary* d = pimpleDict.findDict("coupling");
@@ -36,26 +34,6 @@ Foam::stepCoupling::stepCoupling
                 << tolerance_ << " and " << maxIter_ << exit(FatalIOError);
         }
     }
-}
-
-
-void Foam::stepCoupling::dropOldest(const label n)
-{
-    const label m = dFU_.size() - n;
-    for (label k = 0; k < m; ++k)
-    {
-        dFU_.set(k, dFU_.set(k + n, nullptr));
-        dFA_.set(k, dFA_.set(k + n, nullptr));
-        dGU_.set(k, dGU_.set(k + n, nullptr));
-        dGA_.set(k, dGA_.set(k + n, nullptr));
-        dGFlux_.set(k, dGFlux_.set(k + n, nullptr));
-    }
-    dFU_.resize(m);
-    dFA_.resize(m);
-    dGU_.resize(m);
-    dGA_.resize(m);
-    dGFlux_.resize(m);
-    nKept_ = max(nKept_ - n, 0);
 }
 
 
@@ -80,27 +58,21 @@ void Foam::stepCoupling::start
     // The differences of the last step are kept: its slow modes (the
     // stiff bodies' rigid motions) change little from step to step, so
     // the first updates of this step already act on them (the Couette
-    // disk at viscous number 10: 2.2 passes a step against 2.6).  They are
-    // another map's where the step's matrix moved with its bodies (rho of
-    // disks a thousand times lighter than the liquid): loop() drops them
-    // at the first pass that does not reduce the residual.  They go when
-    // a step was not iterated or did not converge, into and out of the
-    // fallback's projection (another map: the coupled steps after a
-    // fallback of lightRises at 64 cells all fell back too), or when the
-    // mesh changed.  (decided on all ranks together: a refinement may
-    // change some only, and every rank must keep as many differences for
-    // the sums)
+    // stiff disk of test_stiff: 2.2 passes a step against 2.6 with a build
+    // that kept none).  They go when a step was not iterated, into and out of a
+    // fallback's projection (another map), or when the mesh changed.
+    // (decided on all ranks together: a refinement may change some only,
+    // and every rank must keep as many differences for the sums)
     const bool keep = returnReduce
     (
-        on && on_ && change_ < tolerance_ && !projection && !projection_
-     && dFU_.size() && dFU_[0].size() == U.size() && !mesh_.changing(),
+        on && on_ && !projection && !projection_ && dFU_.size()
+     && dFU_[0].size() == U.size() && !mesh_.changing(),
         andOp<bool>()
     );
     projection_ = projection;
     on_ = on;
     iter_ = 0;
     change_ = 0;
-    nKept_ = keep ? dFU_.size() : 0;
     if (!keep)
     {
         dFU_.clear();
@@ -132,19 +104,23 @@ bool Foam::stepCoupling::loop
     const vectorField gA(dt*acceleration.primitiveField());
     const vectorField fU(gU - xU_);
     const vectorField fA(gA - xA_);
-
-    // The last step's differences, if they did not help (above)
-    const scalar residual = sqrt(dot(fU, fA, fU, fA));
-    if (nKept_ && iter_ > 1 && residual >= lastResidual_)
-    {
-        dropOldest(nKept_);
-    }
-    lastResidual_ = residual;
     if (iter_ > 1)
     {
         if (dFU_.size() == nHistory_)
         {
-            dropOldest(1);
+            for (label k = 1; k < nHistory_; ++k)
+            {
+                dFU_.set(k - 1, dFU_.set(k, nullptr));
+                dFA_.set(k - 1, dFA_.set(k, nullptr));
+                dGU_.set(k - 1, dGU_.set(k, nullptr));
+                dGA_.set(k - 1, dGA_.set(k, nullptr));
+                dGFlux_.set(k - 1, dGFlux_.set(k, nullptr));
+            }
+            dFU_.resize(nHistory_ - 1);
+            dFA_.resize(nHistory_ - 1);
+            dGU_.resize(nHistory_ - 1);
+            dGA_.resize(nHistory_ - 1);
+            dGFlux_.resize(nHistory_ - 1);
         }
         dFU_.append(new vectorField(fU - fU_));
         dFA_.append(new vectorField(fA - fA_));
