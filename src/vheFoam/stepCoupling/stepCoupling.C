@@ -59,8 +59,9 @@ void Foam::stepCoupling::start
     // stiff bodies' rigid motions) change little from step to step, so
     // the first updates of this step already act on them (the Couette
     // stiff disk of test_stiff: 2.2 passes a step against 2.6 with a build
-    // that kept none).  They go when a step was not iterated, into and out of a
-    // fallback's projection (another map), or when the mesh changed.
+    // that kept none).  They go when a step was not iterated, into and
+    // out of a fallback's projection (another map), or when the mesh
+    // changed.
     // (decided on all ranks together: a refinement may change some only,
     // and every rank must keep as many differences for the sums)
     const bool keep = returnReduce
