@@ -16,23 +16,20 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "tests", "cases"))
+from fieldDiff import internal_field  # noqa: E402
 
-def internal(path):
-    """A volField's internal values: None where uniform"""
-    s = open(path).read()
-    if re.search(r"internalField\s+uniform\s", s):
-        return None
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", s)
-    n, body = int(m.group(2)), s[m.end():]
-    if m.group(1) == "scalar":
-        return [float(x) for x in body.split(")")[0].split()][:n]
-    return [tuple(float(x) for x in t.split())
-            for t in re.findall(r"\(([^()]*)\)", body)[:n]]
+
+def cells(path, n):
+    """A volField's n internal values (a uniform one repeated)"""
+    m, values = internal_field(path)
+    return [values]*n if m is None else values
 
 
 def main(case, rho1, rho2, alpha, g):
     rho1, rho2, g = float(rho1), float(rho2), float(g)
-    C = internal(os.path.join(case, "0", "C"))
+    _, C = internal_field(os.path.join(case, "0", "C"))
     pts = open(os.path.join(case, "constant", "polyMesh", "points")).read()
     P = [[float(x) for x in t.split()]
          for t in re.findall(r"\(([^()]*)\)", pts[pts.index("("):])]
@@ -46,11 +43,11 @@ def main(case, rho1, rho2, alpha, g):
                    key=float)
     rows = []
     for t in times:
-        U = internal(os.path.join(case, t, "U")) or [(0, 0, 0)]*len(C)
-        a = internal(os.path.join(case, t, alpha))
+        U = cells(os.path.join(case, t, "U"), len(C))
+        a = cells(os.path.join(case, t, alpha), len(C))
         ke = pe = 0.0
         for u, al, c in zip(U, a, C):
-            r = al*rho1 + (1 - al)*rho2
+            r = al[0]*rho1 + (1 - al[0])*rho2
             ke += 0.5*r*(u[0]**2 + u[1]**2 + u[2]**2)*V
             pe -= r*g*c[2]*V
         rows.append((float(t), ke, pe, ke + pe))
