@@ -156,6 +156,36 @@ double vhe_shape_volume(const struct vhe_shape *s)
     }
 }
 
+double vhe_shape_half_width(const struct vhe_shape *s, const int solved[3])
+{
+    double w = HUGE_VAL;
+    int d;
+
+    if (vhe_shape_check(s) != VHE_OK) {
+        return 0.0;
+    }
+    switch (s->kind) {
+    case VHE_SPHERE:
+        return s->radius;
+    case VHE_CYLINDER: {
+        /* its axis along an unsolved direction: a 2D disk, however long */
+        int along = 0;
+        for (d = 0; d < 3; ++d) {
+            along |= !solved[d] && fabs(s->axis[d]) > 0.5;
+        }
+        return s->half_length > 0.0 && !along && s->half_length < s->radius
+             ? s->half_length : s->radius;
+    }
+    default:
+        for (d = 0; d < 3; ++d) {
+            if (solved[d] && s->semi[d] < w) {
+                w = s->semi[d];
+            }
+        }
+        return w < HUGE_VAL ? w : 0.0;
+    }
+}
+
 void vhe_shape_bounds(const struct vhe_shape *s, double lo[3], double hi[3])
 {
     double e[3] = {0.0, 0.0, 0.0};

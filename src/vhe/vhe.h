@@ -419,6 +419,16 @@ double vhe_shape_sdf(const struct vhe_shape *s, const double x[3]);
 double vhe_shape_volume(const struct vhe_shape *s);
 
 /*
+ * The shape's smallest half-width [m] in the directions a mesh solves
+ * (solved[d] != 0; a 2D mesh leaves out its empty direction): a sphere's
+ * or cylinder's radius (a finite cylinder's half length if shorter and
+ * its axis not along an unsolved direction), a box's or ellipsoid's
+ * smallest solved semi-axis.  0 for an invalid shape.  setBodies divides
+ * it by the cell size to say how many cells resolve a body.
+ */
+double vhe_shape_half_width(const struct vhe_shape *s, const int solved[3]);
+
+/*
  * Volume fraction of the shape in an axis-aligned box cell [lo, hi] by
  * adaptive sub-cell integration: a sub-box whose centre lies farther from
  * the surface (by vhe_shape_sdf) than its half-diagonal is wholly in or out;

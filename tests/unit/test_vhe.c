@@ -884,6 +884,30 @@ START_TEST(test_shape_sphere_volume)
 }
 END_TEST
 
+START_TEST(test_shape_half_width)
+{
+    /* the smallest half-width over the solved directions */
+    const int all[3] = {1, 1, 1}, xy[3] = {1, 1, 0};
+    struct vhe_shape s = make_shape(VHE_SPHERE, 0.0, 0.0, 0.0);
+    s.radius = 0.05;
+    ck_assert(vhe_shape_half_width(&s, all) == 0.05);
+    s = make_shape(VHE_CYLINDER, 0.0, 0.0, 0.0);       /* axis z */
+    s.radius = 0.05;
+    ck_assert(vhe_shape_half_width(&s, xy) == 0.05);   /* a 2D disk */
+    s.half_length = 0.02;
+    ck_assert(vhe_shape_half_width(&s, all) == 0.02);  /* a coin */
+    ck_assert(vhe_shape_half_width(&s, xy) == 0.05);   /* its length unsolved */
+    s = make_shape(VHE_BOX, 0.0, 0.0, 0.0);
+    s.semi[0] = 0.15; s.semi[1] = 0.05; s.semi[2] = 0.01;
+    ck_assert(vhe_shape_half_width(&s, all) == 0.01);
+    ck_assert(vhe_shape_half_width(&s, xy) == 0.05);   /* the depth left out */
+    s.kind = VHE_ELLIPSOID;
+    ck_assert(vhe_shape_half_width(&s, xy) == 0.05);
+    s.semi[1] = -1.0;                                  /* invalid */
+    ck_assert(vhe_shape_half_width(&s, all) == 0.0);
+}
+END_TEST
+
 START_TEST(test_shape_convergence)
 {
     /*
@@ -1319,6 +1343,7 @@ static Suite *shapes_suite(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, test_shape_sphere_volume);
+    tcase_add_test(tc, test_shape_half_width);
     tcase_add_test(tc, test_shape_convergence);
     tcase_add_test(tc, test_shape_ellipsoid_volume);
     tcase_add_test(tc, test_shape_box_volume);
