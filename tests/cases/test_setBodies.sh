@@ -9,12 +9,19 @@ d="$WORK/wrap"
 channelCase "$d" cells=32 || { fail setup blockMesh; finish; }
 cat > "$d/system/setBodiesDict" <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object setBodiesDict; }
-bodies { edge { material rubber; shape cylinder; centre (0.01 0.5 0.5); radius 0.2; } }
+bodies
+{
+    edge { material rubber; shape cylinder; centre (0.01 0.5 0.5); radius 0.2; }
+    slab { material rubber; shape box; min (0.5 0.1 0); max (0.7 0.25 1); }
+}
 DICT
 run "$d" setBodies || fail periodicWrap "setBodies failed: $d/log.setBodies"
 read -r exact placed across <<< "$(grep "^Body edge" "$d/log.setBodies" | sed 's/.*volume \([^,]*\), on the mesh \([^,]*\), half-width \([^ ]*\) cells/\1 \2 \3/')"
 check periodicWrap "abs($placed/$exact - 1) < 1e-3" \
     "disk across x = 0: volume on the mesh $placed, exact $exact"
+read -r exact placed <<< "$(grep "^Body slab" "$d/log.setBodies" | sed 's/.*volume \([^,]*\), on the mesh \([^,]*\),.*/\1 \2/')"
+check boxVolume "abs($placed/$exact - 1) < 1e-6" \
+    "a 2D box: volume $exact (its area times the depth), on the mesh $placed"
 check halfWidth "abs($across - 6.4) < 1e-9 and $(grep -c 'cells from centre to surface' "$d/log.setBodies") == 0" \
     "radius 0.2 on cells of 1/32: half-width $across cells, no warning"
 
